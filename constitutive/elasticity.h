@@ -1,0 +1,63 @@
+#pragma once
+/// @file
+/// Isotropic elasticity, constant or pressure-dependent.
+///  - constant:           K = E / (3(1−2ν)),  G = E / (2(1+ν));
+///  - pressure-dependent: K = (1+e0) p / κ with constant ν, so G = 3K(1−2ν) / (2(1+ν)) (the Cam-Clay
+///    swelling line ε_v^e = κ/(1+e0) · ln(p/p_i)). As p → 0 the stiffness would vanish, so K uses
+///    max(p, p_floor): below the floor the response is linear with K(p_floor). The floor is the
+///    material key `elastic_pressure_floor` (Pa).
+#include "constitutive/tensor.h"
+
+namespace soilsph {
+
+/// Bulk and shear moduli at one state.
+struct Moduli {
+  double K;
+  double G;
+  /// D : ε = K tr(ε) I + 2G dev(ε)
+  Mat3 stiffness(const Mat3& eps) const {
+    return K * eps.trace() * Mat3::Identity() + 2.0 * G * deviator(eps);
+  }
+  /// C : σ = tr(σ)/(9K) I + dev(σ)/(2G), the inverse of stiffness().
+  Mat3 compliance(const Mat3& sigma) const {
+    return sigma.trace() / (9.0 * K) * Mat3::Identity() + deviator(sigma) / (2.0 * G);
+  }
+};
+
+class Elasticity {
+ public:
+  enum class Kind { Constant, PressureDependent };
+
+  static Elasticity constant(double young_modulus, double poisson_ratio);
+  static Elasticity pressure_dependent(double swelling_index, double initial_void_ratio, double poisson_ratio,
+                                       double pressure_floor);
+
+  Kind kind() const { return kind_; }
+  double poisson_ratio() const { return nu_; }
+
+  /// Tangent moduli at mean pressure p (compression-positive).
+  Moduli at(double p) const {
+    if (kind_ == Kind::Constant) return constant_;
+    const double K = std::max(p, p_floor_) / kappa_star_;
+    return {K, shear_from_bulk(K)};
+  }
+
+  /// Mean pressure after an elastic volumetric strain dεv (compression-positive) from p, integrating
+  /// dp/dε_v = K(p) exactly (exponential above the floor, linear below it).
+  double pressure_after(double p, double d_eps_v) const;
+
+  /// Secant moduli over an elastic volumetric strain dεv from p: K = Δp/Δε_v (the tangent for
+  /// Δε_v → 0), G from K and ν. Equal to at(p) for constant elasticity.
+  Moduli secant(double p, double d_eps_v) const;
+
+ private:
+  double shear_from_bulk(double K) const { return 1.5 * K * (1.0 - 2.0 * nu_) / (1.0 + nu_); }
+
+  Kind kind_ = Kind::Constant;
+  double nu_ = 0.0;
+  Moduli constant_{0.0, 0.0};
+  double kappa_star_ = 0.0;  ///< κ / (1+e0)
+  double p_floor_ = 0.0;
+};
+
+}  // namespace soilsph

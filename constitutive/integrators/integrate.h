@@ -1,0 +1,24 @@
+#pragma once
+/// @file
+/// One material-point update: the objective rotation by the spin increment (Jaumann terms of
+/// eq 21/28), then the stress integration by the model's chosen scheme. Instantiated inside each
+/// model's translation unit; the switch is decided once per model, so it is a predictable branch.
+#include <stdexcept>
+
+#include "constitutive/integrators/explicit_rate.h"
+#include "constitutive/integrators/integrator.h"
+#include "constitutive/rotation.h"
+
+namespace soilsph {
+
+template <class Model>
+State integrate(const Model& model, const State& state, const Mat3& strain_increment,
+                const Mat3& spin_increment) {
+  const State rotated = rotate_state(state, spin_increment);
+  switch (model.integrator()) {
+    case Integrator::Explicit: return explicit_update(model, rotated, strain_increment);
+  }
+  throw std::logic_error("integrate: unhandled integrator");
+}
+
+}  // namespace soilsph

@@ -1,0 +1,41 @@
+#include "constitutive/material.h"
+
+#include <algorithm>
+#include <iostream>
+
+namespace soilsph {
+
+Material read_material(const TableReader& table) {
+  const std::string model =
+      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName});
+  const Material material = [&]() -> Material {
+    if (model == DruckerPrager::kName) return DruckerPrager(DruckerPrager::Params::read(table));
+    if (model == ModifiedCamClay::kName) return ModifiedCamClay(ModifiedCamClay::Params::read(table));
+    return LinearElastic(LinearElastic::Params::read(table));
+  }();
+  // Keys of other models are allowed (one scene can switch models with --set) but said to be unused.
+  const auto& known = kMaterialKeys;
+  for (const std::string& key : table.unread_keys()) {
+    if (std::find(std::begin(known), std::end(known), key) == std::end(known)) table.fail(key, "is not a known key");
+    std::cerr << "note: " << table.source() << ": [" << table.table_name() << "] " << key << " is not used by "
+              << model << '\n';
+  }
+  return material;
+}
+
+Material load_material(const std::string& path) {
+  const toml::table root = parse_toml_file(path);
+  const toml::table* table = root["material"].as_table();
+  if (!table) throw ParameterError(path + ": no [material] table");
+  return read_material(TableReader(*table, path, "material"));
+}
+
+std::string_view model_name(const Material& material) {
+  return std::visit([](const auto& model) { return std::decay_t<decltype(model)>::kName; }, material);
+}
+
+double density(const Material& material) {
+  return std::visit([](const auto& model) { return model.params().density; }, material);
+}
+
+}  // namespace soilsph

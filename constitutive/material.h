@@ -1,0 +1,33 @@
+#pragma once
+/// @file
+/// The one factory from input to model: a `[material]` TOML table becomes one of the model types.
+/// Callers choose the model once (std::visit) and run code instantiated for it, so the per-particle
+/// update is a direct, inlinable call.
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "constitutive/models/drucker_prager.h"
+#include "constitutive/models/linear_elastic.h"
+#include "constitutive/models/modified_cam_clay.h"
+
+namespace soilsph {
+
+using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay>;
+
+/// Every key a `[material]` table may hold, whichever model it selects.
+inline constexpr std::string_view kMaterialKeys[] = {
+    "model", "density", "young_modulus", "poisson_ratio", "friction_angle", "cohesion", "dilatancy_angle",
+    "compression_index", "swelling_index", "initial_void_ratio", "elasticity", "elastic_pressure_floor",
+    "integrator"};
+
+/// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
+/// other models are reported on stderr as ignored; keys no model knows are errors.
+Material read_material(const TableReader& table);
+/// Reads the `[material]` table of a TOML file (a material file or a scene file).
+Material load_material(const std::string& path);
+
+std::string_view model_name(const Material& material);
+double density(const Material& material);
+
+}  // namespace soilsph

@@ -1,0 +1,80 @@
+#include "constitutive/models/drucker_prager.h"
+
+#include <numbers>
+
+#include "constitutive/integrators/integrate.h"
+
+namespace soilsph {
+
+namespace {
+constexpr double kDegree = std::numbers::pi / 180.0;
+/// √J2 below which the deviator is treated as zero (the cone's apex, where ∂√J2/∂σ is undefined).
+constexpr double kApexSqrtJ2 = 1e-12;
+}  // namespace
+
+DruckerPragerParams DruckerPragerParams::read(const TableReader& t) {
+  DruckerPragerParams p{};
+  p.density = t.number("density", Range::positive(), "kg/m^3");
+  p.young_modulus = t.number("young_modulus", Range::positive(), "Pa");
+  p.poisson_ratio = t.number("poisson_ratio", Range::open(-1.0, 0.5));
+  p.friction_angle = t.number("friction_angle", Range::open(0.0, 90.0), "degrees");
+  p.cohesion = t.number_or("cohesion", 0.0, Range::non_negative(), "Pa");
+  p.dilatancy_angle = t.number_or("dilatancy_angle", 0.0, Range::closed(0.0, p.friction_angle), "degrees");
+  p.integrator = read_integrator(t);
+  return p;
+}
+
+DruckerPrager::DruckerPrager(const Params& params)
+    : params_(params),
+      elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)),
+      sin_psi_(std::sin(params.dilatancy_angle * kDegree)) {
+  const double tan_phi = std::tan(params.friction_angle * kDegree);
+  const double root = std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);  // eq 19
+  alpha_phi_ = tan_phi / root;
+  k_c_ = 3.0 * params.cohesion / root;
+}
+
+double DruckerPrager::yield(const Mat3& sigma, double) const {
+  return std::sqrt(second_deviatoric_invariant(sigma)) + alpha_phi_ * sigma.trace() - k_c_;
+}
+
+double DruckerPrager::normalized_yield(const Mat3& sigma, double) const {
+  const double scale = std::sqrt(second_deviatoric_invariant(sigma)) + alpha_phi_ * std::abs(sigma.trace()) + k_c_;
+  return yield(sigma) / std::max(scale, 1e-300);
+}
+
+namespace {
+/// ∂√J2/∂σ = s / (2√J2), zero at the apex.
+Mat3 sqrt_j2_gradient(const Mat3& sigma) {
+  const Mat3 s = deviator(sigma);
+  const double sqrt_j2 = std::sqrt(0.5 * ddot(s, s));
+  return sqrt_j2 > kApexSqrtJ2 ? Mat3(s / (2.0 * sqrt_j2)) : Mat3(Mat3::Zero());
+}
+}  // namespace
+
+Mat3 DruckerPrager::yield_gradient(const Mat3& sigma, double) const {
+  return sqrt_j2_gradient(sigma) + alpha_phi_ * Mat3::Identity();
+}
+
+Mat3 DruckerPrager::flow_direction(const Mat3& sigma, double) const {
+  return sqrt_j2_gradient(sigma) + 3.0 * sin_psi_ * Mat3::Identity();
+}
+
+Mat3 DruckerPrager::correct(const Mat3& sigma, double) const {
+  // Eq 30–31: beyond the apex, shift the normal stresses so that I1 equals its apex value. There
+  // −α_φ I1 + k_c = 0, so the scaling of eq 32–33 then gives r = 0: the state is the apex itself,
+  // which is returned exactly (a computed shift would leave round-off of either sign).
+  const double I1 = sigma.trace();
+  if (-alpha_phi_ * I1 + k_c_ <= 0.0) return apex_first_invariant() / 3.0 * Mat3::Identity();
+  // Eq 32–33: scale the deviator by r = (−α_φ I1 + k_c)/√J2 when r < 1, keeping I1.
+  const double room = -alpha_phi_ * I1 + k_c_;
+  const double sqrt_j2 = std::sqrt(second_deviatoric_invariant(sigma));
+  if (room >= sqrt_j2) return sigma;
+  return room / sqrt_j2 * deviator(sigma) + I1 / 3.0 * Mat3::Identity();
+}
+
+State DruckerPrager::update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const {
+  return integrate(*this, state, strain_increment, spin_increment);
+}
+
+}  // namespace soilsph

@@ -1,0 +1,68 @@
+#pragma once
+/// @file
+/// Drucker–Prager elastic–perfectly-plastic model with non-associated flow (paper §3.2.2).
+///   yield      f = √J2 + α_φ I1 − k_c                                      (eq 17)
+///   constants  α_φ = tanφ / √(9 + 12 tan²φ),  k_c = 3c / √(9 + 12 tan²φ)   (eq 19, plane-strain fit)
+///   potential  g = √J2 + 3 I1 sinψ                                          (eq 20)
+/// Stresses are tension-positive, so I1 < 0 in compression and the cone's apex is at I1 = k_c/α_φ.
+#include "constitutive/elasticity.h"
+#include "constitutive/integrators/integrator.h"
+#include "constitutive/parameters.h"
+#include "constitutive/state.h"
+
+namespace soilsph {
+
+struct DruckerPragerParams {
+  double density;          ///< kg/m³
+  double young_modulus;    ///< Pa
+  double poisson_ratio;    ///< −
+  double friction_angle;   ///< φ, degrees
+  double cohesion;         ///< c, Pa
+  double dilatancy_angle;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
+  Integrator integrator = Integrator::Explicit;
+
+  static DruckerPragerParams read(const TableReader& table);
+};
+
+class DruckerPrager {
+ public:
+  using Params = DruckerPragerParams;
+  static constexpr std::string_view kName = "drucker-prager";
+
+  explicit DruckerPrager(const Params& params);
+
+  const Params& params() const { return params_; }
+  const Elasticity& elasticity() const { return elasticity_; }
+  Integrator integrator() const { return params_.integrator; }
+  double alpha_phi() const { return alpha_phi_; }
+  double k_c() const { return k_c_; }
+  /// I1 at the apex of the cone, k_c/α_φ (paper-notes: eq 31 prints the inverse ratio).
+  double apex_first_invariant() const { return k_c_ / alpha_phi_; }
+
+  /// f(σ) (eq 17), in Pa; the hardening argument is unused.
+  double yield(const Mat3& sigma, double /*pc*/ = 0.0) const;
+  /// f divided by a stress scale of the state, for tolerances that do not depend on units.
+  double normalized_yield(const Mat3& sigma, double pc = 0.0) const;
+  /// ∂f/∂σ = s/(2√J2) + α_φ I (the deviatoric part is taken as zero at the apex).
+  Mat3 yield_gradient(const Mat3& sigma, double /*pc*/ = 0.0) const;
+  /// ∂g/∂σ = s/(2√J2) + 3 sinψ I (eq 20).
+  Mat3 flow_direction(const Mat3& sigma, double /*pc*/ = 0.0) const;
+  /// Perfect plasticity: no hardening.
+  double hardening_modulus(const Mat3&, double) const { return 0.0; }
+  double harden(double pc, const Mat3& /*d_plastic_strain*/) const { return pc; }
+  /// The paper's stress correction: tension cracking beyond the apex (eq 30–31, apex at
+  /// I1 = k_c/α_φ) then scaling of the deviator back to the cone (eq 32–33).
+  Mat3 correct(const Mat3& sigma, double pc = 0.0) const;
+
+  /// Integrates one increment (strain and spin) with the chosen scheme.
+  State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
+
+ private:
+  Params params_;
+  Elasticity elasticity_;
+  double alpha_phi_;
+  double k_c_;
+  double sin_psi_;
+};
+
+}  // namespace soilsph

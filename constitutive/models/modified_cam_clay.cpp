@@ -1,0 +1,83 @@
+#include "constitutive/models/modified_cam_clay.h"
+
+#include <numbers>
+
+#include "constitutive/integrators/integrate.h"
+
+namespace soilsph {
+
+ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
+  ModifiedCamClayParams p{};
+  p.density = t.number("density", Range::positive(), "kg/m^3");
+  p.poisson_ratio = t.number("poisson_ratio", Range::open(-1.0, 0.5));
+  p.friction_angle = t.number("friction_angle", Range::open(0.0, 90.0), "degrees");
+  p.compression_index = t.number("compression_index", Range::positive());
+  p.swelling_index = t.number("swelling_index", Range::open(0.0, p.compression_index));
+  p.initial_void_ratio = t.number("initial_void_ratio", Range::positive());
+  const std::string kind = t.choice_or("elasticity", "pressure-dependent", {"constant", "pressure-dependent"});
+  p.elasticity = kind == "constant" ? Elasticity::Kind::Constant : Elasticity::Kind::PressureDependent;
+  if (p.elasticity == Elasticity::Kind::Constant) {
+    p.young_modulus = t.number("young_modulus", Range::positive(), "Pa");
+  } else {
+    p.elastic_pressure_floor = t.number_or("elastic_pressure_floor", 1.0e3, Range::positive(), "Pa");
+  }
+  p.integrator = read_integrator(t);
+  return p;
+}
+
+namespace {
+Elasticity make_elasticity(const ModifiedCamClayParams& p) {
+  if (p.elasticity == Elasticity::Kind::Constant) return Elasticity::constant(p.young_modulus, p.poisson_ratio);
+  return Elasticity::pressure_dependent(p.swelling_index, p.initial_void_ratio, p.poisson_ratio,
+                                        p.elastic_pressure_floor);
+}
+}  // namespace
+
+ModifiedCamClay::ModifiedCamClay(const Params& params)
+    : params_(params),
+      elasticity_(make_elasticity(params)),
+      theta_((1.0 + params.initial_void_ratio) / (params.compression_index - params.swelling_index)) {
+  const double sin_phi = std::sin(params.friction_angle * std::numbers::pi / 180.0);
+  M_ = 6.0 * sin_phi / (3.0 - sin_phi);  // eq 26
+}
+
+double ModifiedCamClay::yield(const Mat3& sigma, double pc) const {
+  const double p = mean_pressure(sigma);
+  return M_ * M_ * p * (p - pc) + 3.0 * second_deviatoric_invariant(sigma);
+}
+
+double ModifiedCamClay::normalized_yield(const Mat3& sigma, double pc) const {
+  return yield(sigma, pc) / std::max(M_ * M_ * pc * pc, 1e-300);
+}
+
+Mat3 ModifiedCamClay::yield_gradient(const Mat3& sigma, double pc) const {
+  const double p = mean_pressure(sigma);
+  return -M_ * M_ * (2.0 * p - pc) / 3.0 * Mat3::Identity() + 3.0 * deviator(sigma);
+}
+
+double ModifiedCamClay::hardening_modulus(const Mat3& sigma, double pc) const {
+  const double p = mean_pressure(sigma);
+  return theta_ * p * pc * M_ * M_ * M_ * M_ * (2.0 * p - pc);
+}
+
+double ModifiedCamClay::harden(double pc, const Mat3& d_plastic_strain) const {
+  return pc * std::exp(theta_ * volumetric_strain(d_plastic_strain));
+}
+
+Mat3 ModifiedCamClay::correct(const Mat3& sigma, double pc) const {
+  if (yield(sigma, pc) <= 0.0) return sigma;
+  const double p = mean_pressure(sigma);
+  const Mat3 s = deviator(sigma);
+  const double q = std::sqrt(1.5 * ddot(s, s));
+  const double half = 0.5 * pc;
+  const double t = M_ * half / std::sqrt(M_ * M_ * (p - half) * (p - half) + q * q);
+  // q' = t q, so the deviator scales by t; p' = p_c/2 + t (p − p_c/2).
+  return t * s + isotropic_stress(half + t * (p - half));
+}
+
+State ModifiedCamClay::update(const State& state, const Mat3& strain_increment,
+                              const Mat3& spin_increment) const {
+  return integrate(*this, state, strain_increment, spin_increment);
+}
+
+}  // namespace soilsph

@@ -1,0 +1,74 @@
+#pragma once
+/// @file
+/// Modified Cam-Clay (paper §3.2.3), associated flow, isotropic hardening with the plastic volume.
+///   yield      f = M²p² + q² − M² p p_c                                    (eq 24)
+///   slope      M = 6 sinφ / (3 − sinφ)  (triaxial compression, used at every Lode angle)  (eq 26)
+///   hardening  p_c = p_c0 exp[(1+e0)/(λ−κ) · ε_v^p], ε_v^p compression-positive   (eq 27)
+/// The paper writes eq 27 for compression-positive ε_v^p while its stresses are tension-positive
+/// (paper-notes): the flow rule's plastic volume is negated before it enters the hardening law.
+#include "constitutive/elasticity.h"
+#include "constitutive/integrators/integrator.h"
+#include "constitutive/parameters.h"
+#include "constitutive/state.h"
+
+namespace soilsph {
+
+struct ModifiedCamClayParams {
+  double density;                 ///< kg/m³
+  double poisson_ratio;           ///< −
+  double friction_angle;          ///< φ, degrees (gives M, eq 26)
+  double compression_index;       ///< λ, slope of the NCL in e–ln p
+  double swelling_index;          ///< κ, slope of the swelling line in e–ln p
+  double initial_void_ratio;      ///< e0
+  Elasticity::Kind elasticity;    ///< "constant" (E, ν) or "pressure-dependent" (K = (1+e0)p/κ)
+  double young_modulus;           ///< Pa, constant elasticity only
+  double elastic_pressure_floor;  ///< Pa, pressure-dependent elasticity only
+  Integrator integrator = Integrator::Explicit;
+
+  static ModifiedCamClayParams read(const TableReader& table);
+};
+
+class ModifiedCamClay {
+ public:
+  using Params = ModifiedCamClayParams;
+  static constexpr std::string_view kName = "modified-cam-clay";
+
+  explicit ModifiedCamClay(const Params& params);
+
+  const Params& params() const { return params_; }
+  const Elasticity& elasticity() const { return elasticity_; }
+  Integrator integrator() const { return params_.integrator; }
+  double M() const { return M_; }
+  /// (1+e0)/(λ−κ): the hardening exponent per unit plastic volumetric strain (eq 27).
+  double hardening_exponent() const { return theta_; }
+
+  /// f(σ, p_c) (eq 24), in Pa².
+  double yield(const Mat3& sigma, double pc) const;
+  /// f / (M p_c)², dimensionless.
+  double normalized_yield(const Mat3& sigma, double pc) const;
+  /// ∂f/∂σ = −M²(2p − p_c) I/3 + 3s.
+  Mat3 yield_gradient(const Mat3& sigma, double pc) const;
+  /// Associated flow: ∂g/∂σ = ∂f/∂σ.
+  Mat3 flow_direction(const Mat3& sigma, double pc) const { return yield_gradient(sigma, pc); }
+  /// H = −∂f/∂p_c · ∂p_c/∂λ = (1+e0)/(λ−κ) · p p_c M⁴ (2p − p_c): the hardening term of the
+  /// consistency condition (denominator of eq 29).
+  double hardening_modulus(const Mat3& sigma, double pc) const;
+  /// p_c after a plastic strain increment, eq 27 exact over the increment.
+  double harden(double pc, const Mat3& d_plastic_strain) const;
+  /// The paper's correction (eq 34–35) done as its text describes: move (p, q) along the line to the
+  /// ellipse's centre (p_c/2, 0) until it meets the surface; p_c is kept. The printed β, θ of eq 35
+  /// are not that point (paper-notes), so the intersection is derived here:
+  ///   (p', q') = (p_c/2, 0) + t (p − p_c/2, q),  t = (M p_c/2) / √(M²(p − p_c/2)² + q²),
+  /// which solves M²(p' − p_c/2)² + q'² = (M p_c/2)², i.e. f(p', q', p_c) = 0.
+  Mat3 correct(const Mat3& sigma, double pc) const;
+
+  State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
+
+ private:
+  Params params_;
+  Elasticity elasticity_;
+  double M_;
+  double theta_;
+};
+
+}  // namespace soilsph

@@ -1,0 +1,158 @@
+#include "constitutive/parameters.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace soilsph {
+
+namespace {
+std::string format_number(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+}  // namespace
+
+bool Range::contains(double x) const {
+  if (!std::isfinite(x)) return false;
+  const bool above = lower_open ? x > lower : x >= lower;
+  const bool below = upper_open ? x < upper : x <= upper;
+  return above && below;
+}
+
+std::string Range::describe() const {
+  std::string text;
+  if (std::isfinite(lower)) text += format_number(lower) + (lower_open ? " < " : " <= ");
+  text += "value";
+  if (std::isfinite(upper)) text += (upper_open ? " < " : " <= ") + format_number(upper);
+  if (!std::isfinite(lower) && !std::isfinite(upper)) text = "any finite value";
+  return text;
+}
+
+TableReader::TableReader(const toml::table& table, std::string source, std::string table_name)
+    : table_(table), source_(std::move(source)), table_name_(std::move(table_name)) {}
+
+std::string TableReader::where(std::string_view key) const {
+  return source_ + ": [" + table_name_ + "] " + std::string(key);
+}
+
+void TableReader::fail(std::string_view key, std::string_view what) const {
+  throw ParameterError(where(key) + ": " + std::string(what));
+}
+
+void TableReader::fail_value(std::string_view key, std::string_view value, std::string_view what) const {
+  throw ParameterError(where(key) + " = " + std::string(value) + " " + std::string(what));
+}
+
+const toml::node* TableReader::find(std::string_view key) const {
+  used_.emplace(key);
+  return table_.get(key);
+}
+
+bool TableReader::has(std::string_view key) const { return table_.get(key) != nullptr; }
+
+double TableReader::number(std::string_view key, Range range, std::string_view unit) const {
+  const toml::node* node = find(key);
+  if (!node) fail(key, "is missing (allowed: " + range.describe() + (unit.empty() ? "" : " ") +
+                           std::string(unit) + ")");
+  const std::optional<double> value = node->value<double>();
+  if (!value || node->is_boolean()) fail(key, "must be a number");
+  if (!range.contains(*value)) {
+    fail_value(key, format_number(*value),
+               "is out of range (allowed: " + range.describe() + (unit.empty() ? "" : " ") + std::string(unit) + ")");
+  }
+  return *value;
+}
+
+double TableReader::number_or(std::string_view key, double fallback, Range range,
+                              std::string_view unit) const {
+  return has(key) ? number(key, range, unit) : (used_.emplace(key), fallback);
+}
+
+long long TableReader::integer_or(std::string_view key, long long fallback, long long lo,
+                                  long long hi) const {
+  const toml::node* node = find(key);
+  if (!node) return fallback;
+  const std::optional<long long> value = node->value_exact<long long>();
+  if (!value) fail(key, "must be an integer");
+  if (*value < lo || *value > hi) {
+    fail_value(key, std::to_string(*value),
+               "is out of range (allowed: " + std::to_string(lo) + " <= value <= " + std::to_string(hi) + ")");
+  }
+  return *value;
+}
+
+bool TableReader::boolean_or(std::string_view key, bool fallback) const {
+  const toml::node* node = find(key);
+  if (!node) return fallback;
+  const std::optional<bool> value = node->value_exact<bool>();
+  if (!value) fail(key, "must be true or false");
+  return *value;
+}
+
+std::string TableReader::choice(std::string_view key, std::span<const std::string_view> allowed) const {
+  std::string options;
+  for (std::string_view a : allowed) options += (options.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+  const toml::node* node = find(key);
+  if (!node) fail(key, "is missing (allowed: " + options + ")");
+  const std::optional<std::string> value = node->value_exact<std::string>();
+  if (!value) fail(key, "must be a string (allowed: " + options + ")");
+  for (std::string_view a : allowed) {
+    if (*value == a) return *value;
+  }
+  fail_value(key, "\"" + *value + "\"", "is not allowed (allowed: " + options + ")");
+}
+
+std::string TableReader::choice_or(std::string_view key, std::string_view fallback,
+                                   std::span<const std::string_view> allowed) const {
+  return has(key) ? choice(key, allowed) : (used_.emplace(key), std::string(fallback));
+}
+
+void TableReader::accept(std::initializer_list<std::string_view> keys) const {
+  for (std::string_view k : keys) used_.emplace(k);
+}
+
+std::vector<std::string> TableReader::unread_keys() const {
+  std::vector<std::string> keys;
+  for (const auto& [key, node] : table_) {
+    if (!used_.contains(key.str())) keys.emplace_back(key.str());
+  }
+  return keys;
+}
+
+void TableReader::reject_unknown_keys() const {
+  for (const std::string& key : unread_keys()) fail(key, "is not a known key");
+}
+
+toml::table parse_toml_file(const std::string& path) {
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source().begin;
+    throw ParameterError(path + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+                         ": " + std::string(e.description()));
+  }
+}
+
+void apply_override(toml::table& root, std::string_view assignment) {
+  const std::size_t eq = assignment.find('=');
+  const std::size_t dot = assignment.find('.');
+  if (eq == std::string_view::npos || dot == std::string_view::npos || dot > eq) {
+    throw ParameterError("--set " + std::string(assignment) + ": expected section.key=value");
+  }
+  const std::string section(assignment.substr(0, dot));
+  const std::string key(assignment.substr(dot + 1, eq - dot - 1));
+  const std::string text(assignment.substr(eq + 1));
+  if (!root.contains(section)) root.insert_or_assign(section, toml::table{});
+  toml::table* table = root[section].as_table();
+  if (!table) throw ParameterError("--set " + std::string(assignment) + ": [" + section + "] is not a table");
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    parsed.insert_or_assign("v", text);  // a bare word such as modified-cam-clay is a string
+  }
+  table->insert_or_assign(key, *parsed.get("v"));
+}
+
+}  // namespace soilsph

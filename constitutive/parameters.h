@@ -1,0 +1,98 @@
+#pragma once
+/// @file
+/// Validated reading of one TOML table. Every value is range-checked where it is read, every key
+/// that the table holds must be consumed (or declared known), and every error names the file, the
+/// key and the allowed range, so that a bad input never crashes or falls back silently.
+#include <initializer_list>
+#include <set>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+#include <toml++/toml.h>
+
+namespace soilsph {
+
+/// An input error that names the file, the key and what is allowed.
+class ParameterError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// An interval of admissible values; each end open or closed, or unbounded.
+struct Range {
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+  bool lower_open = true;
+  bool upper_open = true;
+
+  static Range positive() { return {0.0, kInf, true, true}; }                 ///< (0, ∞)
+  static Range non_negative() { return {0.0, kInf, false, true}; }            ///< [0, ∞)
+  static Range open(double lo, double hi) { return {lo, hi, true, true}; }    ///< (lo, hi)
+  static Range closed(double lo, double hi) { return {lo, hi, false, false}; }  ///< [lo, hi]
+  static Range closed_open(double lo, double hi) { return {lo, hi, false, true}; }
+
+  bool contains(double x) const;
+  std::string describe() const;  ///< e.g. "0 < value < 90"
+
+ private:
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+};
+
+/// Reads the keys of one table (e.g. `[material]`) with validation.
+class TableReader {
+ public:
+  /// @param source file name used in messages; @param table_name the table's dotted name.
+  TableReader(const toml::table& table, std::string source, std::string table_name);
+
+  bool has(std::string_view key) const;
+  /// A required number in `range`; `unit` is appended to messages ("Pa", "degrees", "").
+  double number(std::string_view key, Range range, std::string_view unit = "") const;
+  /// An optional number: `fallback` when the key is absent (documented defaults only).
+  double number_or(std::string_view key, double fallback, Range range, std::string_view unit = "") const;
+  /// An optional integer in [lo, hi].
+  long long integer_or(std::string_view key, long long fallback, long long lo, long long hi) const;
+  bool boolean_or(std::string_view key, bool fallback) const;
+  /// A required string that must be one of `allowed`.
+  std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed) const {
+    return choice(key, std::span(allowed.begin(), allowed.size()));
+  }
+  std::string choice(std::string_view key, std::span<const std::string_view> allowed) const;
+  std::string choice_or(std::string_view key, std::string_view fallback,
+                        std::span<const std::string_view> allowed) const;
+  std::string choice_or(std::string_view key, std::string_view fallback,
+                        std::initializer_list<std::string_view> allowed) const {
+    return choice_or(key, fallback, std::span(allowed.begin(), allowed.size()));
+  }
+  /// Marks keys as known without reading them (for keys that belong to another consumer).
+  void accept(std::initializer_list<std::string_view> keys) const;
+  /// Throws for any key of the table that was neither read nor accepted.
+  void reject_unknown_keys() const;
+  /// The keys of the table that were neither read nor accepted, in table order.
+  std::vector<std::string> unread_keys() const;
+  /// Throws a ParameterError about `key` with `what` as the reason.
+  [[noreturn]] void fail(std::string_view key, std::string_view what) const;
+
+  const std::string& source() const { return source_; }
+  const std::string& table_name() const { return table_name_; }
+
+ private:
+  const toml::node* find(std::string_view key) const;
+  [[noreturn]] void fail_value(std::string_view key, std::string_view value, std::string_view what) const;
+  std::string where(std::string_view key) const;
+
+  const toml::table& table_;
+  std::string source_;
+  std::string table_name_;
+  mutable std::set<std::string, std::less<>> used_;
+};
+
+/// Parses a TOML file, turning syntax errors into ParameterError with file, line and column.
+toml::table parse_toml_file(const std::string& path);
+
+/// Applies one `section.key=value` override (the `--set` option) to `root`. The value is parsed
+/// as a TOML value (number, boolean, quoted or bare string); the key must name an existing table.
+void apply_override(toml::table& root, std::string_view assignment);
+
+}  // namespace soilsph

@@ -1,0 +1,23 @@
+#pragma once
+/// @file
+/// The state carried by one material point between updates. One struct for every model: models
+/// without a hardening variable keep `pc = 0`.
+#include "constitutive/tensor.h"
+
+namespace soilsph {
+
+struct State {
+  Mat3 stress = Mat3::Zero();          ///< effective stress σ, tension-positive (Pa)
+  double pc = 0.0;                     ///< preconsolidation pressure p_c (the paper's p0), compression-positive (Pa)
+  Mat3 plastic_strain = Mat3::Zero();  ///< accumulated plastic strain tensor, tension-positive
+  double plastic_shear_strain = 0.0;   ///< accumulated equivalent plastic strain ∫ sqrt(2/3 dε^p:dε^p)
+  double plastic_multiplier = 0.0;     ///< Δλ of the last update (≥ 0), a diagnostic
+};
+
+/// Adds a plastic strain increment to the accumulated measures of `state`.
+inline void accumulate_plastic_strain(State& state, const Mat3& d_plastic_strain) {
+  state.plastic_strain += d_plastic_strain;
+  state.plastic_shear_strain += std::sqrt(2.0 / 3.0 * ddot(d_plastic_strain, d_plastic_strain));
+}
+
+}  // namespace soilsph
