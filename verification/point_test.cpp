@@ -57,7 +57,8 @@ PointCurve run_point_test(const Material& material, const PointTest& test, std::
     history = cvode_reference(material, initial, legs);
   } else {
     const Material chosen = with_integrator(material, parse_integrator(integrator));
-    history = std::visit([&](const auto& model) { return drive_mixed_control(model, initial, legs); }, chosen);
+    history =
+        std::visit([&](const auto& model) { return drive_mixed_control(model, initial, legs); }, chosen);
   }
   PointCurve curve;
   curve.reserve(history.size());
@@ -67,7 +68,8 @@ PointCurve run_point_test(const Material& material, const PointTest& test, std::
 
 void write_point_csv(std::ostream& out, const PointCurve& curve) {
   // The comment line holds no commas, so CSV readers that take it for a row still see one field.
-  out << "# soilsph point: compression-positive; SI (strains 1; stresses Pa); axial = x; radial = mean of y and z; "
+  out << "# soilsph point: compression-positive; SI (strains 1; stresses Pa); axial = x; radial = mean of y "
+         "and z; "
          "eps_q = 2/3 (eps_a - eps_r); q = sqrt(3 J2) signed as sig_a - sig_r; p_c = MCC preconsolidation "
          "pressure (0 otherwise); u = undrained excess pore pressure (0 otherwise)\n"
       << "eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u\n";
@@ -93,6 +95,8 @@ LoadPath parse_load_path(std::string_view name) {
   throw std::invalid_argument("unknown test \"" + std::string(name) + "\" (allowed: " + allowed + ")");
 }
 
-std::string_view load_path_name(LoadPath path) { return kPathNames[static_cast<int>(path)]; }
+std::string_view load_path_name(LoadPath path) {
+  return kPathNames[static_cast<int>(path)];
+}
 
 }  // namespace soilsph::verification

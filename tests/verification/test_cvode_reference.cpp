@@ -39,7 +39,8 @@ TEST_CASE("cvode: MCC isotropic compression follows the NCL eps_v = lambda/(1+e0
   // reloading follow the swelling line ε_v = ε_v,max − κ/(1+e0) ln(p_max/p) until p = p_c.
   const ModifiedCamClay mcc = test::cam_clay();
   const double lambda_star = 0.085 / 1.68, kappa_star = 0.019 / 1.68, p_i = 100e3;
-  const PointCurve curve = run_point_test(mcc, make_test(LoadPath::Isotropic, {0.1, 0.08, 0.15}, 50), "cvode");
+  const PointCurve curve =
+      run_point_test(mcc, make_test(LoadPath::Isotropic, {0.1, 0.08, 0.15}, 50), "cvode");
   REQUIRE(curve.size() == 151);
   const double p_max = curve[50].p;
   for (std::size_t k = 1; k < curve.size(); ++k) {
@@ -53,7 +54,8 @@ TEST_CASE("cvode: MCC isotropic compression follows the NCL eps_v = lambda/(1+e0
   CHECK(curve[50].p == Approx(p_i * std::exp(0.1 / lambda_star)).epsilon(1e-8));
 }
 
-TEST_CASE("cvode: D-P drained triaxial peak q = (3 alpha p_i + k_c)/(1/sqrt3 - alpha) (eq 17, 19)", "[cvode]") {
+TEST_CASE("cvode: D-P drained triaxial peak q = (3 alpha p_i + k_c)/(1/sqrt3 - alpha) (eq 17, 19)",
+          "[cvode]") {
   // On the path σ_r = −p_i, σ_a = −(p_i + q): √J2 = q/√3 and I1 = −3p_i − q, so f = 0 (eq 17) gives
   // q (1/√3 − α_φ) = 3 α_φ p_i + k_c (docs/derivations.md). Before yield q = E ε_a.
   const double cohesion = GENERATE(0.0, 5e3);
@@ -72,7 +74,8 @@ TEST_CASE("cvode: D-P drained triaxial peak q = (3 alpha p_i + k_c)/(1/sqrt3 - a
   CHECK(curve.back().q == Approx(q_peak).epsilon(1e-8));
 }
 
-TEST_CASE("explicit converges to cvode at first order (MCC drained and undrained triaxial)", "[cvode][explicit]") {
+TEST_CASE("explicit converges to cvode at first order (MCC drained and undrained triaxial)",
+          "[cvode][explicit]") {
   const Elasticity::Kind kind = GENERATE(Elasticity::Kind::PressureDependent, Elasticity::Kind::Constant);
   const LoadPath path = GENERATE(LoadPath::TriaxialDrained, LoadPath::TriaxialUndrained);
   const ModifiedCamClay mcc = test::cam_clay(kind);

@@ -30,7 +30,8 @@ TEST_CASE("drained triaxial: the driver holds the radial stress to 1e-10 relativ
       test.ocr = ocr;
       const PointCurve curve = run_point_test(material, test, integrator);
       REQUIRE(curve.size() == 301);
-      for (const PointRecord& r : curve) REQUIRE(std::abs(r.sig_r - test.p_initial) <= 1e-10 * test.p_initial);
+      for (const PointRecord& r : curve)
+        REQUIRE(std::abs(r.sig_r - test.p_initial) <= 1e-10 * test.p_initial);
       // Not trivially held: the axial stress moved well away from the radial one.
       REQUIRE(curve[100].sig_a > 1.5 * test.p_initial);
     }
@@ -40,8 +41,8 @@ TEST_CASE("drained triaxial: the driver holds the radial stress to 1e-10 relativ
 TEST_CASE("linear elastic drained triaxial: q = E eps_a, eps_r = -nu eps_a", "[driver][elastic]") {
   const std::string integrator = GENERATE("explicit", "cvode");
   const double E = 2.5e6, nu = 0.27;
-  const PointCurve curve = run_point_test(test::linear_elastic(E, nu),
-                                          make_test(LoadPath::TriaxialDrained, {0.02, -0.01, 0.01}, 10), integrator);
+  const PointCurve curve = run_point_test(
+      test::linear_elastic(E, nu), make_test(LoadPath::TriaxialDrained, {0.02, -0.01, 0.01}, 10), integrator);
   REQUIRE(curve.size() == 31);
   for (const PointRecord& r : curve) {
     CHECK(r.q == Approx(E * r.eps_a).margin(1e-9 * E * 0.02));
@@ -74,8 +75,8 @@ TEST_CASE("linear elastic oedometer: constrained modulus and K0 = nu/(1-nu)", "[
 TEST_CASE("linear elastic undrained triaxial: p' constant, q = 3G eps_q, u = q/3", "[driver][elastic]") {
   const std::string integrator = GENERATE("explicit", "cvode");
   const double E = 2.5e6, nu = 0.27, G = E / (2 * (1 + nu));
-  const PointCurve curve =
-      run_point_test(test::linear_elastic(E, nu), make_test(LoadPath::TriaxialUndrained, {0.01}, 10), integrator);
+  const PointCurve curve = run_point_test(test::linear_elastic(E, nu),
+                                          make_test(LoadPath::TriaxialUndrained, {0.01}, 10), integrator);
   for (const PointRecord& r : curve) {
     CHECK(r.eps_v == Approx(0.0).margin(1e-15));
     CHECK(r.eps_q == Approx(r.eps_a).epsilon(1e-12));  // ε_r = −ε_a/2
@@ -88,8 +89,8 @@ TEST_CASE("linear elastic undrained triaxial: p' constant, q = 3G eps_q, u = q/3
 TEST_CASE("linear elastic isotropic: p = p_i + K eps_v", "[driver][elastic]") {
   const std::string integrator = GENERATE("explicit", "cvode");
   const double E = 2.5e6, nu = 0.27, K = E / (3 * (1 - 2 * nu));
-  const PointCurve curve =
-      run_point_test(test::linear_elastic(E, nu), make_test(LoadPath::Isotropic, {0.03, 0.01}, 10), integrator);
+  const PointCurve curve = run_point_test(test::linear_elastic(E, nu),
+                                          make_test(LoadPath::Isotropic, {0.03, 0.01}, 10), integrator);
   REQUIRE(curve.size() == 21);
   for (const PointRecord& r : curve) {
     CHECK(r.p == Approx(100e3 + K * r.eps_v).epsilon(1e-12));

@@ -44,16 +44,19 @@ TEST_CASE("malformed strain-path files are rejected naming file and line", "[str
   const std::string header = "d_xx,d_yy,d_zz,d_xy,d_yz,d_xz\n";
   CHECK_THROWS_WITH(parse(header + "0,0,0,0,0,0\n1,2,3,4,5\n"),
                     Catch::Contains("path.csv:3") && Catch::Contains("expected 6 values"));
-  CHECK_THROWS_WITH(parse(header + "0,0,0,0,0,0,0\n"), Catch::Contains("path.csv:2") && Catch::Contains("got 7"));
+  CHECK_THROWS_WITH(parse(header + "0,0,0,0,0,0,0\n"),
+                    Catch::Contains("path.csv:2") && Catch::Contains("got 7"));
   CHECK_THROWS_WITH(parse(header + "0,0,x,0,0,0\n"),
                     Catch::Contains("path.csv:2") && Catch::Contains("column 3") && Catch::Contains("\"x\""));
   CHECK_THROWS_WITH(parse(header + "0,0,1e-3abc,0,0,0\n"), Catch::Contains("path.csv:2"));
-  CHECK_THROWS_WITH(parse(header + "0,0,0,0,0,\n"), Catch::Contains("path.csv:2") && Catch::Contains("column 6"));
+  CHECK_THROWS_WITH(parse(header + "0,0,0,0,0,\n"),
+                    Catch::Contains("path.csv:2") && Catch::Contains("column 6"));
   CHECK_THROWS_WITH(parse(header + "0,0,nan,0,0,0\n"), Catch::Contains("path.csv:2"));
   CHECK_THROWS_WITH(parse("d_xx,d_yy,d_zz\n0,0,0\n"),
                     Catch::Contains("path.csv:1") && Catch::Contains("header"));
   CHECK_THROWS_WITH(parse("0,0,0,0,0,0\n"), Catch::Contains("path.csv:1") && Catch::Contains("header"));
-  CHECK_THROWS_WITH(parse(header + "# nothing\n"), Catch::Contains("path.csv") && Catch::Contains("no strain"));
+  CHECK_THROWS_WITH(parse(header + "# nothing\n"),
+                    Catch::Contains("path.csv") && Catch::Contains("no strain"));
   CHECK_THROWS_WITH(parse(""), Catch::Contains("path.csv") && Catch::Contains("no header"));
   CHECK_THROWS_AS(read_strain_path_file("/nonexistent/path.csv"), ParameterError);
 }

@@ -23,7 +23,6 @@ struct MixedControlOptions {
   int max_iterations = 50;
 };
 
-
 /// One increment of `leg` from `state` to the imposed stresses `target` (Voigt; only the
 /// stress-imposed entries are used): returns the new state and sets `strain_increment` (Voigt,
 /// engineering shears) to the imposed and solved components. Throws std::runtime_error if Newton
@@ -34,10 +33,11 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
   const Partition part(leg);
   const Vec6 sigma_n = stress_to_voigt(state.stress);
   strain_increment = leg.increment;
-  solve_free(voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part,
-                     target - sigma_n, strain_increment);
+  solve_free(voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part, target - sigma_n,
+             strain_increment);
   double imposed_scale = 0.0;
-  for (int a = 0; a < part.n_free; ++a) imposed_scale = std::max(imposed_scale, std::abs(target(part.free[a])));
+  for (int a = 0; a < part.n_free; ++a)
+    imposed_scale = std::max(imposed_scale, std::abs(target(part.free[a])));
 
   double residual_norm = 0.0;
   for (int iteration = 0; iteration <= options.max_iterations; ++iteration) {
@@ -87,8 +87,8 @@ PointHistory drive_mixed_control(const Model& model, const State& initial, std::
         State next = mixed_control_increment(model, last.state, legs[l], target, strain_increment, options);
         history.push_back({last.strain + strain_from_voigt(strain_increment), next});
       } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string(e.what()) + " in increment " + std::to_string(k + 1) + " of leg " +
-                                 std::to_string(l + 1));
+        throw std::runtime_error(std::string(e.what()) + " in increment " + std::to_string(k + 1) +
+                                 " of leg " + std::to_string(l + 1));
       }
     }
   }

@@ -21,7 +21,9 @@ constexpr int kStrain = 6;
 constexpr int kPc = 12;
 
 template <class Model>
-constexpr bool kPlastic = requires(const Model& m, const Mat3& s) { m.yield_gradient(s, 0.0); };
+constexpr bool kPlastic = requires(const Model& m, const Mat3& s) {
+  m.yield_gradient(s, 0.0);
+};
 
 /// The rates at one state for one leg and branch (elastic or plastic).
 struct Rates {
@@ -76,7 +78,9 @@ struct Problem {
   std::string last_error;
 };
 
-Vec6 stress_of(const double* y) { return Eigen::Map<const Vec6>(y); }
+Vec6 stress_of(const double* y) {
+  return Eigen::Map<const Vec6>(y);
+}
 
 template <class Model>
 int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
@@ -136,7 +140,8 @@ struct Solver {
 template <class Model>
 void check(int flag, const char* what, const Problem<Model>& problem) {
   if (flag >= 0) return;
-  std::string message = std::string("cvode reference: ") + what + " failed (" + CVodeGetReturnFlagName(flag) + ")";
+  std::string message =
+      std::string("cvode reference: ") + what + " failed (" + CVodeGetReturnFlagName(flag) + ")";
   if (!problem.last_error.empty()) message += ": " + problem.last_error;
   throw std::runtime_error(message);
 }
@@ -175,7 +180,8 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   // Absolute tolerances scaled to the stress level of the test.
   const double stress_scale = std::max({initial.stress.cwiseAbs().maxCoeff(), initial.pc, 1.0});
   double* atol = N_VGetArrayPointer(s.tolerances);
-  for (int k = 0; k < kSize; ++k) atol[k] = options.absolute_tolerance * (k < kStrain || k == kPc ? stress_scale : 1.0);
+  for (int k = 0; k < kSize; ++k)
+    atol[k] = options.absolute_tolerance * (k < kStrain || k == kPc ? stress_scale : 1.0);
 
   s.memory = CVodeCreate(CV_BDF, s.context);
   if (!s.memory) throw std::runtime_error("cvode reference: CVodeCreate failed");
@@ -193,7 +199,8 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   for (const Leg& leg : legs) {
     problem.leg = &leg;
     problem.part = Partition(leg);
-    problem.plastic = starts_plastic(model, leg, problem.part, stress_of(y), y[kPc], options.surface_tolerance);
+    problem.plastic =
+        starts_plastic(model, leg, problem.part, stress_of(y), y[kPc], options.surface_tolerance);
     check(CVodeReInit(s.memory, 0.0, s.y), "CVodeReInit", problem);
     int direction = problem.plastic ? -1 : 1;
     check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
@@ -204,7 +211,8 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
         const int flag = CVode(s.memory, k, s.y, &t, CV_NORMAL);
         check(flag, "CVode", problem);
         if (flag != CV_ROOT_RETURN) break;
-        if (switches > 100) throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
+        if (switches > 100)
+          throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
         // Switch branch at the root and restart there, so no step straddles the kink.
         problem.plastic = !problem.plastic;
         direction = problem.plastic ? -1 : 1;
@@ -225,7 +233,8 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
 
 PointHistory cvode_reference(const Material& material, const State& initial, std::span<const Leg> legs,
                              const CvodeOptions& options) {
-  return std::visit([&](const auto& model) { return integrate_legs(model, initial, legs, options); }, material);
+  return std::visit([&](const auto& model) { return integrate_legs(model, initial, legs, options); },
+                    material);
 }
 
 }  // namespace soilsph::verification
