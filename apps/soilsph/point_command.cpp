@@ -99,7 +99,8 @@ void add_point_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   std::string integrators;
   for (std::string_view name : kIntegratorNames) integrators += std::string(name) + ", ";
-  cmd->add_option("--integrator", o->integrator, "stress integrator: " + integrators + "or cvode (the reference)")
+  cmd->add_option("--integrator", o->integrator,
+                  "stress integrator: " + integrators + "or cvode (the reference)")
       ->capture_default_str();
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,
