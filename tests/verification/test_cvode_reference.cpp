@@ -109,3 +109,19 @@ TEST_CASE("explicit converges to cvode at first order (MCC drained and undrained
     }
   }
 }
+
+TEST_CASE("cvode: isotropic extension to the D-P apex", "[cvode]") {
+  // Elastic until p = 0 (the apex for c = 0, eq 31), reached at ε_v = −p_i/K.
+  const double K = 1e6 / (3 * (1 - 2 * 0.3));
+  const PointTest test = make_test(LoadPath::Isotropic, {-0.2}, 10);
+  SECTION("with dilatancy the stress stays at the apex") {
+    const PointCurve curve = run_point_test(test::drucker_prager(0.0, 10.0), test, "cvode");
+    for (const PointRecord& r : curve) {
+      CHECK(r.p == Approx(std::max(100e3 + K * r.eps_v, 0.0)).margin(1e-6 * 100e3));
+      CHECK(r.q == Approx(0.0).margin(1e-6 * 100e3));
+    }
+  }
+  SECTION("without dilatancy the flow rule has no solution there: a clear error, not NaN") {
+    CHECK_THROWS_WITH(run_point_test(test::drucker_prager(0.0, 0.0), test, "cvode"), Catch::Contains("apex"));
+  }
+}

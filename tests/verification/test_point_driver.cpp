@@ -129,6 +129,7 @@ TEST_CASE("a strain path reproduces the built-in path with the same increments",
     CHECK(b[k].p == Approx(a[k].p).epsilon(1e-8));
     CHECK(b[k].p_c == Approx(a[k].p_c).epsilon(1e-8));
     CHECK(b[k].u == 0.0);  // the strain path reports no pore pressure
+    CHECK(a[k].u == Approx(a[k].q / 3 - (a[k].p - undrained.p_initial)).margin(1e-9 * undrained.p_initial));
   }
   CHECK(a.back().q > 50e3);  // the clay yielded
 }
