@@ -33,7 +33,7 @@ struct Rates {
   Vec6 strain = Vec6::Zero();
   double pc = 0.0;
   double plastic_multiplier = 0.0;  ///< λ̇, 0 on the elastic branch
-  bool defined = true;  ///< false where n_f:D:n_g + H ≤ 0 (no plastic flow rule, e.g. D-P apex with ψ = 0)
+  bool defined = true;              ///< false where n_f:D:n_g + H ≤ 0: no plastic solution
 };
 
 template <class Model>
@@ -97,8 +97,9 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   const Rates r = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc], problem.plastic);
   if (!r.defined) {
     problem.last_error =
-        "the plastic modulus n_f:D:n_g + H is not positive (e.g. the Drucker-Prager apex with "
-        "psi = 0): the continuum problem has no solution past this state";
+        "the plastic modulus n_f:D:n_g + H is not positive, so plastic loading has no continuum solution "
+        "from this state (the Drucker-Prager apex with psi = 0, or Cam-Clay softening on the dry side that "
+        "outweighs the elastic stiffness)";
     return -1;  // unrecoverable
   }
   double* d = N_VGetArrayPointer(ydot);
