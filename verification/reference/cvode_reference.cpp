@@ -5,7 +5,9 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-#include <memory>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -242,8 +244,11 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
         if (flag != CV_ROOT_RETURN) break;
         if (switches > 100)
           throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
-        // Switch branch at the root and restart there, so no step straddles the kink.
-        problem.plastic = !problem.plastic;
+        // Switch branch at the root and restart there, so no step straddles the kink: to elastic
+        // where λ̇ reached 0; to plastic where f reached 0 unless the loading is tangential and
+        // turns inwards (then the state stays elastic).
+        problem.plastic = !problem.plastic && starts_plastic(model, leg, problem.part, stress_of(y), y[kPc],
+                                                             std::numeric_limits<double>::infinity());
         direction = problem.plastic ? -1 : 1;
         check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
         check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
