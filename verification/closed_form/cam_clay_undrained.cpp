@@ -38,15 +38,19 @@ double CamClayUndrainedTriaxial::distance_to_csl(double p, double offset) const 
 }
 
 double CamClayUndrainedTriaxial::strain_at(double p) const {
-  const double MM = c_.M * c_.M;
-  const auto rate = [&](double s, double offset) {  // offset = s − p'_f
-    const double pc = pc_at(s);
-    const double q = q_at(s);
-    const double dpc_dp = -pc / (c_.plastic_slope * c_.bulk(s));        // from dε_v^p = −dp'/K
-    const double dq_dp = MM * (pc + s * dpc_dp - 2.0 * s) / (2.0 * q);  // d/dp' of q² = M²(p' p_c − p'²)
-    return -dq_dp / (3.0 * c_.shear(s)) + 2.0 * q / (MM * distance_to_csl(s, offset)) / c_.bulk(s);
+  // Plastic shear: dε_q^p = 2q/(M²(2p' − p_c)) dε_v^p with dε_v^p = −dp'/K, singular at p'_f.
+  const auto plastic_rate = [&](double s, double offset) {  // offset = s − p'_f
+    return 2.0 * q_at(s) / (c_.M * c_.M * distance_to_csl(s, offset)) / c_.bulk(s);
   };
-  return eps_yield_ - integrate_to_log_singularity(rate, p0_, p, p_failure_);
+  const double plastic = -integrate_to_log_singularity(plastic_rate, p0_, p, p_failure_);
+  // Elastic shear ∫ dq/(3G): (q − q_y)/(3G) for constant G; for G = c p'/κ*, by parts,
+  // ∫ dq/p' = q/p' − q_y/p'_0 − ∫_{p'}^{p'_0} q/s² ds, which avoids dq/dp' → ∞ at the NC start.
+  double elastic = (q_at(p) - q_yield_) / (3.0 * c_.shear(p0_));
+  if (c_.pressure_dependent) {
+    const double by_parts = integrate([&](double s) { return q_at(s) / (s * s); }, p, p0_);
+    elastic = c_.kappa_star / (3.0 * c_.shear_to_bulk) * (q_at(p) / p - q_yield_ / p0_ - by_parts);
+  }
+  return eps_yield_ + elastic + plastic;
 }
 
 ReferencePoint CamClayUndrainedTriaxial::at(double eps_a) const {

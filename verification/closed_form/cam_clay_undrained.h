@@ -9,9 +9,9 @@
 ///    yield surface q = M √(p'(p_c − p')). Pressure-dependent elasticity: p_c = p_c0 (p'_0/p')^{κ/(λ−κ)},
 ///    and the critical state p_c = 2p' gives p'_f = p'_0 (R0/2)^Λ, Λ = (λ−κ)/λ, q_f = M p'_f.
 ///    Constant elasticity: p_c = p_c0 exp((p'_0 − p')/(K(λ*−κ*))) and p'_f solves 2p' = p_c(p') (Brent).
-///  - ε_a = ε_q (no volume change) = q_y/(3G_0) + ∫ [−(dq/dp')/(3G) + 2q/(M²(2p' − p_c) K)] dp' from
-///    p' to p'_0 (GSL quadrature): the elastic shear plus the flow rule's shear per plastic volume
-///    dε_v^p = −dp'/K.
+///  - ε_a = ε_q (no volume change) = q_y/(3G_0) + ∫ dq/(3G) + ∫_{p'}^{p'_0} 2q/(M²(2s − p_c) K) ds: the
+///    elastic shear plus the flow rule's shear per plastic volume dε_v^p = −dp'/K (GSL quadrature; the
+///    elastic part in closed form for constant G, by parts for G ∝ p').
 #include "verification/closed_form/cam_clay_constants.h"
 #include "verification/closed_form/reference_point.h"
 
