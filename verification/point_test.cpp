@@ -8,6 +8,7 @@
 
 #include "verification/driver/mixed_control.h"
 #include "verification/paths/load_path.h"
+#include "verification/reference/cvode_reference.h"
 
 namespace soilsph::verification {
 
@@ -53,10 +54,11 @@ PointCurve run_point_test(const Material& material, const PointTest& test, std::
   const State initial = initial_state(material, test);
   PointHistory history;
   if (integrator == kReferenceIntegrator) {
-    throw std::invalid_argument("the cvode reference is not available yet");
+    history = cvode_reference(material, initial, legs);
   } else {
     const Material chosen = with_integrator(material, parse_integrator(integrator));
-    history = std::visit([&](const auto& model) { return drive_mixed_control(model, initial, legs); }, chosen);
+    history =
+        std::visit([&](const auto& model) { return drive_mixed_control(model, initial, legs); }, chosen);
   }
   PointCurve curve;
   curve.reserve(history.size());
@@ -65,7 +67,9 @@ PointCurve run_point_test(const Material& material, const PointTest& test, std::
 }
 
 void write_point_csv(std::ostream& out, const PointCurve& curve) {
-  out << "# soilsph point: compression-positive, SI (strains -, stresses Pa); axial = x, radial = mean of y,z; "
+  // The comment line holds no commas, so CSV readers that take it for a row still see one field.
+  out << "# soilsph point: compression-positive; SI (strains 1; stresses Pa); axial = x; radial = mean of y "
+         "and z; "
          "eps_q = 2/3 (eps_a - eps_r); q = sqrt(3 J2) signed as sig_a - sig_r; p_c = MCC preconsolidation "
          "pressure (0 otherwise); u = undrained excess pore pressure (0 otherwise)\n"
       << "eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u\n";
@@ -91,6 +95,8 @@ LoadPath parse_load_path(std::string_view name) {
   throw std::invalid_argument("unknown test \"" + std::string(name) + "\" (allowed: " + allowed + ")");
 }
 
-std::string_view load_path_name(LoadPath path) { return kPathNames[static_cast<int>(path)]; }
+std::string_view load_path_name(LoadPath path) {
+  return kPathNames[static_cast<int>(path)];
+}
 
 }  // namespace soilsph::verification

@@ -83,7 +83,8 @@ void add_point_command(CLI::App& app) {
   cmd->add_option("--strain-path", o->strain_path,
                   "CSV of strain increments d_xx,d_yy,d_zz,d_xy,d_yz,d_xz (tension-positive), one per row")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--p-initial", o->p_initial, "initial isotropic effective stress, Pa (compression-positive)")
+  cmd->add_option("--p-initial", o->p_initial,
+                  "initial isotropic effective stress, Pa (compression-positive)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->add_option("--ocr", o->ocr, "overconsolidation ratio, MCC p_c0 = OCR * p_initial (>= 1)")
@@ -99,7 +100,8 @@ void add_point_command(CLI::App& app) {
   cmd->add_option("--integrator", o->integrator, "stress integrator (explicit, ...) or cvode (the reference)")
       ->capture_default_str();
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
-  cmd->add_option("--set", o->overrides, "override a material key, e.g. --set material.friction_angle=30 (repeatable)");
+  cmd->add_option("--set", o->overrides,
+                  "override a material key, e.g. --set material.friction_angle=30 (repeatable)");
   cmd->callback([o, strain_max] { run(*o, strain_max->count() > 0); });
 }
 

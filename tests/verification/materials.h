@@ -4,7 +4,9 @@
 
 namespace soilsph::test {
 
-inline LinearElastic linear_elastic(double E = 1.0e6, double nu = 0.3) { return LinearElastic({2000.0, E, nu}); }
+inline LinearElastic linear_elastic(double E = 1.0e6, double nu = 0.3) {
+  return LinearElastic({2000.0, E, nu});
+}
 
 inline DruckerPrager drucker_prager(double cohesion = 0.0, double dilatancy = 0.0) {
   DruckerPrager::Params p{};

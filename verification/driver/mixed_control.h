@@ -13,8 +13,8 @@
 #include <string>
 
 #include "constitutive/tangent.h"
+#include "verification/driver/mixed_control_algebra.h"
 #include "verification/driver/point_history.h"
-#include "verification/paths/load_path.h"
 
 namespace soilsph::verification {
 
@@ -23,42 +23,6 @@ struct MixedControlOptions {
   int max_iterations = 50;
 };
 
-namespace detail {
-
-/// Indices of the stress-imposed (free-strain) and strain-imposed components of a leg.
-struct Partition {
-  int free[6];
-  int n_free = 0;
-  int fixed[6];
-  int n_fixed = 0;
-  explicit Partition(const Leg& leg) {
-    for (int k = 0; k < 6; ++k) (leg.stress_imposed[k] ? free[n_free++] : fixed[n_fixed++]) = k;
-  }
-};
-
-/// The 6×6 Voigt elastic stiffness (engineering shear strains) of moduli D.
-inline Mat6 voigt_stiffness(const Moduli& D) {
-  Mat6 C;
-  for (int k = 0; k < 6; ++k) C.col(k) = stress_to_voigt(D.stiffness(strain_from_voigt(Vec6::Unit(k))));
-  return C;
-}
-
-/// Solves the free entries of `x` from C_ff x_f = b_f − C_fi x_i (x_i given in x).
-inline void solve_free(const Mat6& C, const Partition& part, const Vec6& b, Vec6& x) {
-  if (part.n_free == 0) return;
-  Eigen::MatrixXd A(part.n_free, part.n_free);
-  Eigen::VectorXd rhs(part.n_free);
-  for (int a = 0; a < part.n_free; ++a) {
-    rhs(a) = b(part.free[a]);
-    for (int c = 0; c < part.n_fixed; ++c) rhs(a) -= C(part.free[a], part.fixed[c]) * x(part.fixed[c]);
-    for (int c = 0; c < part.n_free; ++c) A(a, c) = C(part.free[a], part.free[c]);
-  }
-  const Eigen::VectorXd solution = A.partialPivLu().solve(rhs);
-  for (int a = 0; a < part.n_free; ++a) x(part.free[a]) = solution(a);
-}
-
-}  // namespace detail
-
 /// One increment of `leg` from `state` to the imposed stresses `target` (Voigt; only the
 /// stress-imposed entries are used): returns the new state and sets `strain_increment` (Voigt,
 /// engineering shears) to the imposed and solved components. Throws std::runtime_error if Newton
@@ -66,13 +30,14 @@ inline void solve_free(const Mat6& C, const Partition& part, const Vec6& b, Vec6
 template <class Model>
 State mixed_control_increment(const Model& model, const State& state, const Leg& leg, const Vec6& target,
                               Vec6& strain_increment, const MixedControlOptions& options = {}) {
-  const detail::Partition part(leg);
+  const Partition part(leg);
   const Vec6 sigma_n = stress_to_voigt(state.stress);
   strain_increment = leg.increment;
-  detail::solve_free(detail::voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part,
-                     target - sigma_n, strain_increment);
+  solve_free(voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part, target - sigma_n,
+             strain_increment);
   double imposed_scale = 0.0;
-  for (int a = 0; a < part.n_free; ++a) imposed_scale = std::max(imposed_scale, std::abs(target(part.free[a])));
+  for (int a = 0; a < part.n_free; ++a)
+    imposed_scale = std::max(imposed_scale, std::abs(target(part.free[a])));
 
   double residual_norm = 0.0;
   for (int iteration = 0; iteration <= options.max_iterations; ++iteration) {
@@ -90,7 +55,7 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
     // Newton: T_ff δ_f = −r_f with the strain-imposed entries held (δ_i = 0).
     const Mat6 tangent = algorithmic_tangent(model, state, strain_from_voigt(strain_increment));
     Vec6 correction = Vec6::Zero();
-    detail::solve_free(tangent, part, -residual, correction);
+    solve_free(tangent, part, -residual, correction);
     strain_increment += correction;
   }
   throw std::runtime_error("mixed control: Newton did not converge (residual of the imposed stresses " +
@@ -122,8 +87,8 @@ PointHistory drive_mixed_control(const Model& model, const State& initial, std::
         State next = mixed_control_increment(model, last.state, legs[l], target, strain_increment, options);
         history.push_back({last.strain + strain_from_voigt(strain_increment), next});
       } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string(e.what()) + " in increment " + std::to_string(k + 1) + " of leg " +
-                                 std::to_string(l + 1));
+        throw std::runtime_error(std::string(e.what()) + " in increment " + std::to_string(k + 1) +
+                                 " of leg " + std::to_string(l + 1));
       }
     }
   }

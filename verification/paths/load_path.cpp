@@ -34,10 +34,17 @@ Vec6 driven_strain(LoadPath path, double d) {
   Vec6 e = Vec6::Zero();
   switch (path) {
     case LoadPath::TriaxialDrained:
-    case LoadPath::Oedometer: e(0) = -d; break;
-    case LoadPath::TriaxialUndrained: e.head<3>() << -d, 0.5 * d, 0.5 * d; break;  // tr = 0
-    case LoadPath::Isotropic: e.head<3>().setConstant(-d / 3.0); break;            // d is ε_v
-    case LoadPath::StrainPath: break;
+    case LoadPath::Oedometer:
+      e(0) = -d;
+      break;
+    case LoadPath::TriaxialUndrained:  // tr = 0
+      e.head<3>() << -d, 0.5 * d, 0.5 * d;
+      break;
+    case LoadPath::Isotropic:  // d is ε_v
+      e.head<3>().setConstant(-d / 3.0);
+      break;
+    case LoadPath::StrainPath:
+      break;
   }
   return e;
 }

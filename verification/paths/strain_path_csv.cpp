@@ -47,7 +47,8 @@ std::vector<Mat3> read_strain_path(std::istream& in, const std::string& source) 
     for (std::string cell; std::getline(row, cell, ',');) cells.push_back(trim(cell));
     if (text.back() == ',') cells.push_back("");
     if (cells.size() != 6)
-      throw ParameterError(where + "expected 6 values (" + kHeader + "), got " + std::to_string(cells.size()));
+      throw ParameterError(where + "expected 6 values (" + kHeader + "), got " +
+                           std::to_string(cells.size()));
     Mat3 d = Mat3::Zero();
     for (int c = 0; c < 6; ++c) {
       std::size_t used = 0;
