@@ -97,7 +97,10 @@ void add_point_command(CLI::App& app) {
   cmd->add_option("--increments", o->increments, "increments per leg")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--integrator", o->integrator, "stress integrator (explicit, ...) or cvode (the reference)")
+  std::string integrators;
+  for (std::string_view name : kIntegratorNames) integrators += std::string(name) + ", ";
+  cmd->add_option("--integrator", o->integrator,
+                  "stress integrator: " + integrators + "or cvode (the reference)")
       ->capture_default_str();
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,

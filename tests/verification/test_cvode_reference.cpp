@@ -54,6 +54,19 @@ TEST_CASE("cvode: MCC isotropic compression follows the NCL eps_v = lambda/(1+e0
   CHECK(curve[50].p == Approx(p_i * std::exp(0.1 / lambda_star)).epsilon(1e-8));
 }
 
+TEST_CASE("cvode: reloading to a turning point that falls on an increment", "[cvode]") {
+  // Unload–reload is elastic and reversible, so the state at ε_v = 0.2 on reload is the state at the
+  // end of the first leg; the yield root then falls (within round-off) on that output time.
+  const ModifiedCamClay mcc = test::cam_clay(Elasticity::Kind::Constant);
+  const PointCurve curve =
+      run_point_test(mcc, make_test(LoadPath::Isotropic, {0.2, 0.1, 0.2, 0.3}, 7), "cvode");
+  REQUIRE(curve.size() == 29);
+  CHECK(curve[21].eps_v == Approx(0.2).epsilon(1e-12));
+  CHECK(curve[21].p == Approx(curve[7].p).epsilon(1e-9));
+  CHECK(curve[21].p_c == Approx(curve[7].p_c).epsilon(1e-9));
+  CHECK(curve[28].p_c > curve[21].p_c * 1.1);  // and yields again beyond it
+}
+
 TEST_CASE("cvode: D-P drained triaxial peak q = (3 alpha p_i + k_c)/(1/sqrt3 - alpha) (eq 17, 19)",
           "[cvode]") {
   // On the path σ_r = −p_i, σ_a = −(p_i + q): √J2 = q/√3 and I1 = −3p_i − q, so f = 0 (eq 17) gives

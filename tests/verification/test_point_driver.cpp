@@ -38,6 +38,17 @@ TEST_CASE("drained triaxial: the driver holds the radial stress to 1e-10 relativ
   }
 }
 
+TEST_CASE("drained triaxial with huge explicit increments: damped Newton still holds the radial stress",
+          "[driver]") {
+  // OCR 30 in 7 increments of 0.029: the explicit update's residual is kinked and plain Newton
+  // from the elastic guess cycles; the backtracking fallback converges.
+  PointTest test = make_test(LoadPath::TriaxialDrained, {0.2}, 7);
+  test.ocr = 30.0;
+  const PointCurve curve = run_point_test(test::cam_clay(), test, "explicit");
+  REQUIRE(curve.size() == 8);
+  for (const PointRecord& r : curve) CHECK(std::abs(r.sig_r - test.p_initial) <= 1e-10 * test.p_initial);
+}
+
 TEST_CASE("linear elastic drained triaxial: q = E eps_a, eps_r = -nu eps_a", "[driver][elastic]") {
   const std::string integrator = GENERATE("explicit", "cvode");
   const double E = 2.5e6, nu = 0.27;

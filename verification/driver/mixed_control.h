@@ -8,6 +8,8 @@
 /// tangent, else central differences), until ‖r‖∞ ≤ tolerance · max(‖σ_f*‖∞, 10⁻³ ‖σ‖∞) (relative to
 /// the imposed stresses; the floor covers imposed zero stresses). The first guess is the elastic
 /// solution at σ_n. Templated on the model: called once per run from a std::visit.
+#include <cmath>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -23,44 +25,80 @@ struct MixedControlOptions {
   int max_iterations = 50;
 };
 
-/// One increment of `leg` from `state` to the imposed stresses `target` (Voigt; only the
-/// stress-imposed entries are used): returns the new state and sets `strain_increment` (Voigt,
-/// engineering shears) to the imposed and solved components. Throws std::runtime_error if Newton
-/// does not reach the tolerance.
+namespace detail {
+/// The update for a trial strain increment and its residual on the imposed stresses (‖·‖∞, Pa).
+struct Trial {
+  State state;
+  Vec6 residual = Vec6::Zero();
+  double norm = 0.0;
+};
+
 template <class Model>
-State mixed_control_increment(const Model& model, const State& state, const Leg& leg, const Vec6& target,
-                              Vec6& strain_increment, const MixedControlOptions& options = {}) {
-  const Partition part(leg);
+Trial evaluate(const Model& model, const State& state, const Partition& part, const Vec6& target,
+               const Vec6& strain_increment) {
+  Trial t{model.update(state, strain_from_voigt(strain_increment), Mat3::Zero())};
+  const Vec6 sigma = stress_to_voigt(t.state.stress);
+  for (int a = 0; a < part.n_free; ++a) {
+    t.residual(part.free[a]) = sigma(part.free[a]) - target(part.free[a]);
+    t.norm = std::max(t.norm, std::abs(t.residual(part.free[a])));
+  }
+  return t;
+}
+
+/// Newton from the elastic guess; with `damped`, each step is halved until the residual decreases.
+template <class Model>
+std::optional<Trial> solve_increment(const Model& model, const State& state, const Partition& part,
+                                     const Leg& leg, const Vec6& target, Vec6& strain_increment,
+                                     const MixedControlOptions& options, bool damped) {
   const Vec6 sigma_n = stress_to_voigt(state.stress);
   strain_increment = leg.increment;
   solve_free(voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part, target - sigma_n,
              strain_increment);
+  Trial trial = evaluate(model, state, part, target, strain_increment);
+  if (part.n_free == 0) return trial;
   double imposed_scale = 0.0;
   for (int a = 0; a < part.n_free; ++a)
     imposed_scale = std::max(imposed_scale, std::abs(target(part.free[a])));
-
-  double residual_norm = 0.0;
-  for (int iteration = 0; iteration <= options.max_iterations; ++iteration) {
-    const State next = model.update(state, strain_from_voigt(strain_increment), Mat3::Zero());
-    if (part.n_free == 0) return next;
-    const Vec6 sigma = stress_to_voigt(next.stress);
-    Vec6 residual = Vec6::Zero();
-    residual_norm = 0.0;
-    for (int a = 0; a < part.n_free; ++a) {
-      residual(part.free[a]) = sigma(part.free[a]) - target(part.free[a]);
-      residual_norm = std::max(residual_norm, std::abs(residual(part.free[a])));
-    }
-    const double scale = std::max(imposed_scale, 1e-3 * sigma.cwiseAbs().maxCoeff());
-    if (residual_norm <= options.tolerance * scale) return next;
+  constexpr int kMaxHalvings = 30;
+  for (int iteration = 0;; ++iteration) {
+    const double scale = std::max(imposed_scale, 1e-3 * trial.state.stress.cwiseAbs().maxCoeff());
+    if (trial.norm <= options.tolerance * scale) return trial;
+    if (iteration == options.max_iterations || !std::isfinite(trial.norm)) return std::nullopt;
     // Newton: T_ff δ_f = −r_f with the strain-imposed entries held (δ_i = 0).
     const Mat6 tangent = algorithmic_tangent(model, state, strain_from_voigt(strain_increment));
     Vec6 correction = Vec6::Zero();
-    solve_free(tangent, part, -residual, correction);
-    strain_increment += correction;
+    solve_free(tangent, part, -trial.residual, correction);
+    double step = 1.0;
+    for (int halving = 0;; ++halving, step *= 0.5) {
+      Trial next = evaluate(model, state, part, target, strain_increment + step * correction);
+      if (!damped || next.norm < trial.norm || halving == kMaxHalvings) {
+        strain_increment += step * correction;
+        trial = std::move(next);
+        break;
+      }
+    }
   }
-  throw std::runtime_error("mixed control: Newton did not converge (residual of the imposed stresses " +
-                           std::to_string(residual_norm) + " Pa after " +
-                           std::to_string(options.max_iterations) + " iterations)");
+}
+}  // namespace detail
+
+/// One increment of `leg` from `state` to the imposed stresses `target` (Voigt; only the
+/// stress-imposed entries are used): returns the new state and sets `strain_increment` (Voigt,
+/// engineering shears) to the imposed and solved components. Plain Newton first; if it fails,
+/// Newton damped by backtracking, because a discrete update need not be smooth (with large
+/// increments the explicit scheme's residual has kinks and several branches). Throws
+/// std::runtime_error if neither reaches the tolerance.
+template <class Model>
+State mixed_control_increment(const Model& model, const State& state, const Leg& leg, const Vec6& target,
+                              Vec6& strain_increment, const MixedControlOptions& options = {}) {
+  const Partition part(leg);
+  for (bool damped : {false, true}) {
+    if (auto solved =
+            detail::solve_increment(model, state, part, leg, target, strain_increment, options, damped))
+      return solved->state;
+  }
+  throw std::runtime_error("mixed control: Newton did not converge on the imposed stresses in " +
+                           std::to_string(options.max_iterations) +
+                           " iterations, plain or damped (more increments may help)");
 }
 
 /// Runs every leg from `initial`: one sample per increment, the initial state first. The imposed
