@@ -82,10 +82,12 @@ std::vector<Case> cases() {
       {"MCC pd drained OCR 1.5", pd, TriaxialDrained, 1.5, {0.1}, "mcc-triaxial-drained", 4e-2},
       {"MCC constant drained NC", constant, TriaxialDrained, 1.0, {0.3}, "mcc-triaxial-drained", 3e-3},
       {"MCC constant drained OCR 1.5", constant, TriaxialDrained, 1.5, {0.3}, "mcc-triaxial-drained", 5e-3},
-      // MCC isotropic load-unload-reload: measured 9.6e-2 (pd, OCR 1 and 1.5), 1.2e-4 (constant NC).
+      // MCC isotropic load-unload-reload: measured 9.6e-2 (pd, OCR 1 and 1.5), 1.2e-4 (constant NC),
+      // 7.0e-4 (constant OCR 1.5, whose yield point falls on an increment boundary).
       {"MCC pd isotropic NC", pd, Isotropic, 1.0, {0.1, 0.05, 0.15}, "mcc-isotropic", 0.15},
       {"MCC pd isotropic OCR 1.5", pd, Isotropic, 1.5, {0.1, 0.05, 0.15}, "mcc-isotropic", 0.15},
       {"MCC constant isotropic NC", constant, Isotropic, 1.0, {0.1, 0.05, 0.15}, "mcc-isotropic", 2e-4},
+      {"MCC constant isotropic OCR 1.5", constant, Isotropic, 1.5, {0.1, 0.05, 0.15}, "mcc-isotropic", 1e-3},
       // MCC oedometer load-unload-reload: measured 1.28e-2 (NC), 1.40e-2 (OCR 1.5).
       {"MCC pd oedometer NC", pd, Oedometer, 1.0, {0.1, 0.095, 0.15}, "mcc-oedometer", 2e-2},
       {"MCC pd oedometer OCR 1.5", pd, Oedometer, 1.5, {0.1, 0.095, 0.15}, "mcc-oedometer", 2e-2},
