@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 KPA = 1e-3
@@ -89,8 +90,14 @@ def plot_case(case, folder):
     axes[2].set_xlim(left=0.0)
     draw_surfaces(axes[2], case, reference)
     axes[2].set_ylim(bottom=min(0.0, axes[2].get_ylim()[0]))
+    low, high = axes[0].get_ylim()
+    if high - low < 1.0:  # q ≡ 0 (isotropic): do not magnify round-off
+        axes[0].set_ylim(-1.0, 1.0)
     if compression:
         axes[3].set_xscale("log")
+        axes[3].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        axes[3].xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 1.5, 2.0, 3.0, 5.0, 7.0)))
+        axes[3].xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
         axes[3].set(xlabel="p' (kPa, log scale)", ylabel="void ratio e = e0 − (1+e0) ε_v", title="e – ln p'")
     for ax in axes:
         ax.grid(alpha=0.3)
