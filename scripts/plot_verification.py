@@ -50,14 +50,17 @@ def curves(case, folder):
 
 def draw_surfaces(ax, case, reference):
     """Yield surface(s) and the critical-state / failure line in the p'-q plane (triaxial compression)."""
-    p_top = ax.get_xlim()[1]
-    p = np.linspace(0.0, p_top / KPA, 400)
+    p_top = ax.get_xlim()[1] / KPA
+    pcs = {}
+    if case["model"] == "modified-cam-clay":
+        pcs["initial yield surface"] = case["ocr"] * case["p_initial"]
+        if reference is not None:
+            pcs["final yield surface"] = reference["p_c"][-1]
+        p_top = max([p_top] + list(pcs.values()))
+    p = np.linspace(0.0, p_top, 400)
     if case["model"] == "modified-cam-clay":
         M = case["M"]
         ax.plot(p * KPA, M * p * KPA, color="gray", lw=1, label="CSL q = M p'")
-        pcs = {"initial yield surface": case["ocr"] * case["p_initial"]}
-        if reference is not None:
-            pcs["final yield surface"] = reference["p_c"][-1]
         for (label, pc), ls in zip(pcs.items(), (":", "-.")):
             pp = np.linspace(0.0, pc, 400)
             qq = M * np.sqrt(np.maximum(pp * (pc - pp), 0.0))
@@ -87,8 +90,8 @@ def plot_case(case, folder):
     axes[0].set(xlabel="axial strain ε_a", ylabel="q (kPa)", title="q – ε_a")
     axes[1].set(xlabel="axial strain ε_a", ylabel="volumetric strain ε_v", title="ε_v – ε_a")
     axes[2].set(xlabel="p' (kPa)", ylabel="q (kPa)", title="stress path")
-    axes[2].set_xlim(left=0.0)
     draw_surfaces(axes[2], case, reference)
+    axes[2].set_xlim(left=0.0)
     axes[2].set_ylim(bottom=min(0.0, axes[2].get_ylim()[0]))
     low, high = axes[0].get_ylim()
     if high - low < 1.0:  # q ≡ 0 (isotropic): do not magnify round-off
