@@ -15,6 +15,9 @@ constexpr double kYieldTolerance = 1e-9;
 double g(double eta, double M) {
   return 1.0 + eta * eta / (M * M);
 }
+
+/// Depth ln(|η_y − η_K0|/|η − η_K0|) beyond which the state is taken on the K0 line (|η − η_K0| ~ 1e-11).
+constexpr double kMaxDepth = 25.0;
 }  // namespace
 
 double cam_clay_k0_stress_ratio(const ModifiedCamClay& model) {
@@ -99,10 +102,10 @@ double CamClayOedometer::denominator(double eta) const {
   return b_ + c_.plastic_slope * k * (h - 2.0 / 3.0);
 }
 
-double CamClayOedometer::log_pressure_change(double eta) const {
-  return integrate_to_log_singularity(
-      [&](double e, double offset) { return -denominator(e) / numerator(e, offset); }, eta_yield_, eta,
-      eta_k0_);
+double CamClayOedometer::log_pressure_change(double depth) const {
+  return integrate_to_log_depth(
+      [&](double e, double offset) { return -denominator(e) / numerator(e, offset); }, eta_yield_, eta_k0_,
+      depth);
 }
 
 ReferencePoint CamClayOedometer::loading(double eps_a) const {
@@ -111,21 +114,27 @@ ReferencePoint CamClayOedometer::loading(double eps_a) const {
     const double p = p_initial_ * std::exp(eps_a / c_.kappa_star);
     return {eps_a, eps_a, p, 2.0 * c_.shear_to_bulk * (p - p_initial_), pc0_};
   }
-  const auto strain = [&](double eta, double x) {
-    return eps_yield_ + c_.lambda_star * x + c_.plastic_slope * std::log(g(eta, M) / g(eta_yield_, M));
+  // η approaches η_K0 only as ln p' → ∞. The unknown is the depth d = ln|η_y − η_K0| − ln|η − η_K0|,
+  // in which ln p' is well conditioned (solving for η itself would lose digits next to η_K0).
+  const auto eta_at = [&](double depth) { return eta_k0_ + (eta_yield_ - eta_k0_) * std::exp(-depth); };
+  const auto strain = [&](double depth, double x) {
+    return eps_yield_ + c_.lambda_star * x +
+           c_.plastic_slope * std::log(g(eta_at(depth), M) / g(eta_yield_, M));
   };
-  double eta = eta_k0_, x = 0.0;
+  double depth = kMaxDepth, x = 0.0;
   if (std::abs(eta_yield_ - eta_k0_) < 1e-12 * M) {
-    x = (eps_a - strain(eta_k0_, 0.0)) / c_.lambda_star;
+    x = (eps_a - strain(depth, 0.0)) / c_.lambda_star;  // already on the K0 line
   } else {
-    // η moves from η_y towards η_K0, reached only as ln p' → ∞ (log singularity of the quadrature);
-    // closer than resolvable, the state is on the K0 line itself.
-    const auto residual = [&](double e) { return strain(e, log_pressure_change(e)) - eps_a; };
-    const auto root = find_root_before_singularity(residual, eta_yield_, eta_k0_, 1e-14, 1e-15);
-    eta = root.value_or(eta_k0_ + (eta_yield_ - eta_k0_) * 1e-11);
-    x = log_pressure_change(eta);
-    if (!root) x += (eps_a - strain(eta, x)) / c_.lambda_star;
+    const auto residual = [&](double d) { return strain(d, log_pressure_change(d)) - eps_a; };
+    if (residual(kMaxDepth) >= 0.0) {
+      depth = find_root(residual, 0.0, kMaxDepth, 1e-14, 1e-13);
+      x = log_pressure_change(depth);
+    } else {  // deeper than resolvable: on the K0 line, where dε_a = λ* d ln p'
+      x = log_pressure_change(depth);
+      x += (eps_a - strain(depth, x)) / c_.lambda_star;
+    }
   }
+  const double eta = eta_at(depth);
   const double p = p_yield_ * std::exp(x);
   return {eps_a, eps_a, p, eta * p, p * g(eta, M)};
 }

@@ -48,8 +48,8 @@ class CamClayOedometer {
   std::vector<ReferencePoint> curve(std::span<const double> eps_a) const;
 
  private:
-  ReferencePoint loading(double eps_a) const;         ///< first loading: elastic, then along the ODE
-  double log_pressure_change(double eta) const;       ///< ln(p'/p'_y) at stress ratio η, by quadrature
+  ReferencePoint loading(double eps_a) const;      ///< first loading: elastic, then along the ODE
+  double log_pressure_change(double depth) const;  ///< ln(p'/p'_y) at depth ln(|η_y − η_K0|/|η − η_K0|)
   double numerator(double eta, double offset) const;  ///< N(η), offset = η − η_K0
   double denominator(double eta) const;
 

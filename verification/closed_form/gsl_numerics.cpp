@@ -47,14 +47,18 @@ double integrate(const std::function<double(double)>& f, double a, double b, dou
 
 double integrate_to_log_singularity(const std::function<double(double, double)>& f, double from, double to,
                                     double singular, double rel_tol) {
+  return integrate_to_log_depth(f, from, singular, std::log((from - singular) / (to - singular)), rel_tol);
+}
+
+double integrate_to_log_depth(const std::function<double(double, double)>& f, double from, double singular,
+                              double depth, double rel_tol) {
   const double span = from - singular;
-  const double end = std::log(span / (to - singular));
   return integrate(
       [&](double t) {
         const double offset = span * std::exp(-t);  // s − singular
         return -f(singular + offset, offset) * offset;
       },
-      0.0, end, rel_tol);
+      0.0, depth, rel_tol);
 }
 
 double find_root(const std::function<double(double)>& f, double lo, double hi, double rel_tol,

@@ -18,6 +18,11 @@ double integrate(const std::function<double(double)>& f, double a, double b, dou
 double integrate_to_log_singularity(const std::function<double(double, double)>& f, double from, double to,
                                     double singular, double rel_tol = 1e-12);
 
+/// The same integral to depth `depth` = ln((from − singular)/(to − singular)) given directly, for callers
+/// that parametrise the approach to the singularity by its logarithmic depth.
+double integrate_to_log_depth(const std::function<double(double, double)>& f, double from, double singular,
+                              double depth, double rel_tol = 1e-12);
+
 /// The root of f in [lo, hi] (f(lo), f(hi) of opposite signs or zero) by GSL Brent, to `rel_tol` (or
 /// `abs_tol`).
 double find_root(const std::function<double(double)>& f, double lo, double hi, double rel_tol = 1e-14,
