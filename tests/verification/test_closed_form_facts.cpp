@@ -7,6 +7,7 @@
 #include "verification/closed_form/cam_clay_compression.h"
 #include "verification/closed_form/cam_clay_drained.h"
 #include "verification/closed_form/cam_clay_undrained.h"
+#include "verification/closed_form/drucker_prager_strain_path.h"
 #include "verification/closed_form/drucker_prager_triaxial.h"
 #include "verification/closed_form/gsl_numerics.h"
 
@@ -41,6 +42,33 @@ TEST_CASE("D-P drained triaxial: the peak lies on the cone, the elastic branch i
     CHECK(a.q == Approx(q));
     CHECK(b.eps_v < a.eps_v);
   }
+}
+
+TEST_CASE("D-P strain paths: undrained plateau on the cone, elastic oedometer and isotropic lines",
+          "[closed-form]") {
+  const double p_i = 100e3;
+  const DruckerPrager plain = test::table1_drucker_prager();
+  const DruckerPragerStrainPath undrained(plain, p_i, 0.0, 1.0);
+  // ψ = 0: constant p, q = 3G ε_a up to the cone at √3 · 3 α_φ p_i, then a plateau.
+  const double G = 1.0e6 / 2.6, q_cone = std::sqrt(3.0) * 3.0 * plain.alpha_phi() * p_i;
+  CHECK(undrained.at(0.01).q == Approx(3.0 * G * 0.01));
+  CHECK(undrained.yield_strain() == Approx(q_cone / (3.0 * G)));
+  CHECK(undrained.at(0.3).q == Approx(q_cone));
+  CHECK(undrained.at(0.3).p == Approx(p_i));
+  // c and ψ > 0: dilation at constant volume raises p'; the state stays on the cone.
+  const DruckerPrager dilatant = test::table1_drucker_prager(5e3, 5.0);
+  const DruckerPragerStrainPath cf(dilatant, p_i, 0.0, 1.0);
+  for (double eps : {0.2, 0.3}) {
+    const ReferencePoint r = cf.at(eps);
+    CHECK(r.p > p_i);
+    CHECK(dilatant.yield(test::triaxial_stress(r.p, r.q)) == Approx(0.0).margin(1e-9 * r.q));
+  }
+  // Oedometer: elastic K0 = ν/(1 − ν) below the cone; isotropic: p = p_i + K ε_v.
+  const ReferencePoint oedo = DruckerPragerStrainPath(plain, p_i, 1.0, 2.0 / 3.0).at(0.05);
+  const double sigma_a = oedo.p + 2.0 * oedo.q / 3.0 - p_i, sigma_r = oedo.p - oedo.q / 3.0 - p_i;
+  CHECK(sigma_r / sigma_a == Approx(0.3 / 0.7));
+  const double K = 1.0e6 / (3.0 * 0.4);
+  CHECK(DruckerPragerStrainPath(plain, p_i, 3.0, 0.0).at(0.01).p == Approx(p_i + K * 0.03));
 }
 
 TEST_CASE("MCC undrained triaxial: vertical elastic path, yield-surface path, end on the CSL",

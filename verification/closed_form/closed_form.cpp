@@ -7,6 +7,7 @@
 #include "verification/closed_form/cam_clay_compression.h"
 #include "verification/closed_form/cam_clay_drained.h"
 #include "verification/closed_form/cam_clay_undrained.h"
+#include "verification/closed_form/drucker_prager_strain_path.h"
 #include "verification/closed_form/drucker_prager_triaxial.h"
 
 namespace soilsph::verification {
@@ -29,11 +30,25 @@ void require_monotonic(std::span<const double> driven, std::string_view name) {
 }
 
 template <class ClosedForm>
-std::vector<ReferencePoint> pointwise(const ClosedForm& cf, std::span<const double> driven) {
+std::vector<ReferencePoint> pointwise(const ClosedForm& cf, std::span<const double> driven,
+                                      double scale = 1.0) {
   std::vector<ReferencePoint> out;
   out.reserve(driven.size());
-  for (const double e : driven) out.push_back(cf.at(e));
+  for (const double e : driven) out.push_back(cf.at(scale * e));
   return out;
+}
+
+/// D-P under a fixed-ratio strain path: linear branches, so any programme that stays elastic is
+/// described, and a monotonic one beyond yield. `axial_per_driven` converts the driven strain to ε_a.
+std::vector<ReferencePoint> drucker_prager_strain_path(const DruckerPrager& model, const PointTest& test,
+                                                       std::span<const double> driven, std::string_view name,
+                                                       double volume_ratio, double shear_ratio,
+                                                       double axial_per_driven) {
+  const DruckerPragerStrainPath cf(model, test.p_initial, volume_ratio, shear_ratio);
+  const bool elastic = std::all_of(driven.begin(), driven.end(),
+                                   [&](double e) { return axial_per_driven * e <= cf.yield_strain(); });
+  if (!elastic) require_monotonic(driven, name);
+  return pointwise(cf, driven, axial_per_driven);
 }
 }  // namespace
 
@@ -51,6 +66,21 @@ std::vector<ReferencePoint> closed_form_curve(std::string_view name, const Mater
     require_monotonic(driven, name);
     return pointwise(DruckerPragerDrainedTriaxial(model_of<DruckerPrager>(material, name), test.p_initial),
                      driven);
+  }
+  if (name == "dp-triaxial-undrained") {
+    needs_path(LoadPath::TriaxialUndrained);
+    return drucker_prager_strain_path(model_of<DruckerPrager>(material, name), test, driven, name, 0.0, 1.0,
+                                      1.0);
+  }
+  if (name == "dp-oedometer") {
+    needs_path(LoadPath::Oedometer);
+    return drucker_prager_strain_path(model_of<DruckerPrager>(material, name), test, driven, name, 1.0,
+                                      2.0 / 3.0, 1.0);
+  }
+  if (name == "dp-isotropic") {  // driven ε_v = 3 ε_a
+    needs_path(LoadPath::Isotropic);
+    return drucker_prager_strain_path(model_of<DruckerPrager>(material, name), test, driven, name, 3.0, 0.0,
+                                      1.0 / 3.0);
   }
   if (name == "mcc-triaxial-undrained") {
     needs_path(LoadPath::TriaxialUndrained);

@@ -13,8 +13,9 @@ namespace soilsph::verification {
 
 /// Names accepted by closed_form_curve(); "none" means the case has no closed form.
 inline constexpr std::string_view kClosedFormNames[] = {
-    "none",          "dp-triaxial-drained", "mcc-triaxial-undrained", "mcc-triaxial-drained",
-    "mcc-isotropic", "mcc-oedometer"};
+    "none",         "dp-triaxial-drained",    "dp-triaxial-undrained", "dp-oedometer",
+    "dp-isotropic", "mcc-triaxial-undrained", "mcc-triaxial-drained",  "mcc-isotropic",
+    "mcc-oedometer"};
 
 /// The driven strain of a row: volumetric on the isotropic path, axial otherwise (compression-positive).
 double driven_strain(const PointRecord& row, LoadPath path);
