@@ -61,6 +61,9 @@ def draw_surfaces(ax, case, reference):
     if case["model"] == "modified-cam-clay":
         M = case["M"]
         ax.plot(p * KPA, M * p * KPA, color="gray", lw=1, label="CSL q = M p'")
+        if case["path"] == "oedometer" and "eta_k0" in case:
+            ax.plot(p * KPA, case["eta_k0"] * p * KPA, color="tab:green", lw=1, ls="--",
+                    label=f"K0 line, η = {case['eta_k0']:.3f}")
         for (label, pc), ls in zip(pcs.items(), (":", "-.")):
             pp = np.linspace(0.0, pc, 400)
             qq = M * np.sqrt(np.maximum(pp * (pc - pp), 0.0))

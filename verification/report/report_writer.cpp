@@ -1,5 +1,7 @@
 #include "verification/report/report_writer.h"
 
+#include "verification/closed_form/cam_clay_compression.h"
+
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -51,6 +53,9 @@ std::string model_json(const Material& material) {
           s << ", \"M\": " << m.M() << ", \"e0\": " << m.params().initial_void_ratio
             << ", \"lambda\": " << m.params().compression_index
             << ", \"kappa\": " << m.params().swelling_index;
+        if constexpr (std::is_same_v<T, ModifiedCamClay>)
+          if (m.elasticity().kind() == Elasticity::Kind::PressureDependent)
+            s << ", \"eta_k0\": " << cam_clay_k0_stress_ratio(m);  // the K0 line of the oedometer plots
       },
       material);
   return s.str();
