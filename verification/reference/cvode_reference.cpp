@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -159,8 +160,9 @@ struct Solver {
 template <class Model>
 void check(int flag, const char* what, const Problem<Model>& problem) {
   if (flag >= 0) return;
-  std::string message =
-      std::string("cvode reference: ") + what + " failed (" + CVodeGetReturnFlagName(flag) + ")";
+  char* name = CVodeGetReturnFlagName(flag);  // malloc'd by SUNDIALS
+  std::string message = std::string("cvode reference: ") + what + " failed (" + name + ")";
+  std::free(name);
   if (!problem.last_error.empty()) message += ": " + problem.last_error;
   throw std::runtime_error(message);
 }
