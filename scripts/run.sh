@@ -9,4 +9,7 @@ mkdir -p "$out"
 for material in data/materials/dp-table1.toml data/materials/mcc-table1.toml; do
   build/apps/soilsph/soilsph material "$material"
 done
-echo "results written to $out/"
+# Main job (until the SPH solver lands): the material-point verification report, every case of
+# verification/cases/ against the CVODE reference and the closed forms, with CSVs and plots.
+build/apps/soilsph/soilsph verify --out "$out/verification"
+echo "results written to $out/ (verification report: $out/verification/report.md)"

@@ -12,5 +12,6 @@ void add_material_command(CLI::App& app);
 /// `soilsph point`'s integrator when --integrator is not given.
 inline constexpr std::string_view kDefaultPointIntegrator = "explicit";
 void add_point_command(CLI::App& app);
+void add_verify_command(CLI::App& app);
 
 }  // namespace soilsph::cli
