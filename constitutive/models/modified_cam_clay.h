@@ -10,6 +10,7 @@
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/parameters.h"
 #include "constitutive/state.h"
+#include "constitutive/voigt.h"
 
 namespace soilsph {
 
@@ -24,6 +25,7 @@ struct ModifiedCamClayParams {
   double young_modulus;           ///< Pa, constant elasticity only
   double elastic_pressure_floor;  ///< Pa, pressure-dependent elasticity only
   Integrator integrator = Integrator::Explicit;
+  double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
 
   static ModifiedCamClayParams read(const TableReader& table);
 };
@@ -38,6 +40,7 @@ class ModifiedCamClay {
   const Params& params() const { return params_; }
   const Elasticity& elasticity() const { return elasticity_; }
   Integrator integrator() const { return params_.integrator; }
+  double substep_tolerance() const { return params_.substep_tolerance; }
   double M() const { return M_; }
   /// (1+e0)/(λ−κ): the hardening exponent per unit plastic volumetric strain (eq 27).
   double hardening_exponent() const { return theta_; }
@@ -63,6 +66,8 @@ class ModifiedCamClay {
   Mat3 correct(const Mat3& sigma, double pc) const;
 
   State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
+  /// ∂σ/∂Δε of update() without spin: analytic for `implicit`, central differences otherwise.
+  Mat6 consistent_tangent(const State& state, const Mat3& strain_increment) const;
 
  private:
   Params params_;
