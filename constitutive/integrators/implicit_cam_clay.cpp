@@ -11,6 +11,8 @@ namespace {
 constexpr int kMaxIterations = 100;
 constexpr double kYieldTolerance = 1e-13;  ///< |f| / (M p_c)² at convergence
 constexpr double kRelativeStep = 1e-15;    ///< bracket width relative to the root at convergence
+constexpr double kAbsoluteVolume = 1e-20;  ///< plastic volume below which v is converged absolutely
+constexpr double kResidualTolerance = 1e-14;  ///< |r1| relative to its terms at convergence
 const double kSqrt3Over2 = std::sqrt(1.5);
 
 /// The return-mapping equations of one increment, evaluated at (v, Δλ).
@@ -65,7 +67,8 @@ class CamClayReturn {
     return -M2_ * ((2.0 * x.p - x.pc) * x.Kt + theta_ * x.p * x.pc) - q2_G(x) * x.dG * x.Kt;
   }
   double f_l(const Point& x) const { return q2_l(x); }
-  double yield_scale(const Point& x) const { return M2_ * x.pc * x.pc; }
+  /// The size of the terms of f, for a round-off-aware convergence test.
+  double yield_scale(const Point& x) const { return M2_ * (x.p * x.p + x.pc * x.pc) + x.q2; }
 
   /// v(Δλ) solving r1 = 0: r1 is increasing in v, negative at min(0, −Δλ M² p_c,n) and positive at
   /// max(0, 2Δλ M² p_trial) (p decreases and p_c increases with v).
@@ -73,15 +76,27 @@ class CamClayReturn {
     const Point trial = at(0.0, l);
     double lo = std::min(0.0, -l * M2_ * pc_n_), hi = std::max(0.0, 2.0 * l * M2_ * trial.p);
     double v = std::clamp(v_guess, lo, hi);
+    double last_step = hi - lo, step_before_last = 2.0 * (hi - lo);
     for (int it = 0; it < kMaxIterations; ++it) {
       const Point x = at(v, l);
       const double r = r1(x);
-      if (r == 0.0) return x;
+      // Converged when r1 is round-off of its own terms (they cancel at the root).
+      if (!std::isfinite(r)) {  // p_c overflowed: v is far too large
+        hi = v;
+        v = 0.5 * (lo + hi);
+        continue;
+      }
+      if (std::abs(r) <= kResidualTolerance * (std::abs(x.v) + l * M2_ * (2.0 * std::abs(x.p) + x.pc))) return x;
       (r < 0.0 ? lo : hi) = v;
+      // Newton, bisecting when it leaves the bracket or is slower than bisection: a step larger than
+      // half the one before last (rtsafe, Numerical Recipes §9.4; Newton creeps down exp(θ v)).
       const double step = r / r1_v(x);
       double next = v - step;
-      if (!std::isfinite(next) || next <= lo || next >= hi) next = 0.5 * (lo + hi);
-      if (std::abs(next - v) <= kRelativeStep * std::abs(v) + 1e-300 || hi - lo <= kRelativeStep * std::abs(v))
+      if (!std::isfinite(next) || next <= lo || next >= hi || 2.0 * std::abs(step) > std::abs(step_before_last))
+        next = 0.5 * (lo + hi);
+      step_before_last = last_step;
+      last_step = next - v;
+      if (std::abs(next - v) <= kRelativeStep * std::abs(v) + kAbsoluteVolume || hi - lo <= kRelativeStep * std::abs(v) + kAbsoluteVolume)
         return at(next, l);
       v = next;
     }
@@ -151,6 +166,7 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
     l = scale;
   }
   bool converged = false;
+  double last_step = std::numeric_limits<double>::infinity(), step_before_last = last_step;
   for (int it = 0; it < kMaxIterations; ++it) {
     x = eqs.solve_volume(l, x.v);
     if (std::abs(x.f) <= kYieldTolerance * eqs.yield_scale(x) || hi - lo <= kRelativeStep * l) {
@@ -158,9 +174,15 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
       break;
     }
     (x.f > 0.0 ? lo : hi) = l;
-    const double slope = eqs.total_f_l(x);
-    double next = l - x.f / slope;
-    if (!std::isfinite(next) || next <= lo || next >= hi) next = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * l;
+    const double step = x.f / eqs.total_f_l(x);
+    double next = l - step;
+    // Bisect when Newton leaves the bracket or is slower than bisection (it can cycle where f(Δλ)
+    // bends); double Δλ while no upper bracket is known.
+    const bool slow = 2.0 * std::abs(step) > std::abs(step_before_last);
+    if (!std::isfinite(next) || next <= lo || next >= hi || (slow && std::isfinite(hi)))
+      next = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * l;
+    step_before_last = last_step;
+    last_step = next - l;
     l = next;
   }
   if (!converged || !std::isfinite(x.f))

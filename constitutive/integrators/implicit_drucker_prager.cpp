@@ -22,9 +22,11 @@ State implicit_update(const DruckerPrager& model, const State& start, const Mat3
   const double A = D.G + 27.0 * alpha * D.K * sin_psi;  // n_f : D : n_g (denominator of eq 22)
   const double d_lambda = f_trial / A;
 
-  if (sqrt_j2 - D.G * d_lambda > 0.0) {  // return to the cone
-    const double shrink = 1.0 - D.G * d_lambda / sqrt_j2;
-    next.stress = shrink * s_trial + (I1 - 27.0 * D.K * sin_psi * d_lambda) / 3.0 * Mat3::Identity();
+  // On the cone √J2 = k_c − α_φ I1 (= √J2_tr − GΔλ, computed without its cancellation near the apex).
+  const double I1_next = I1 - 27.0 * D.K * sin_psi * d_lambda;
+  const double sqrt_j2_next = model.k_c() - alpha * I1_next;
+  if (sqrt_j2_next > 0.0) {  // return to the cone
+    next.stress = sqrt_j2_next / sqrt_j2 * s_trial + I1_next / 3.0 * Mat3::Identity();
     accumulate_plastic_strain(next, d_lambda * (s_trial / (2.0 * sqrt_j2) + 3.0 * sin_psi * Mat3::Identity()));
     next.plastic_multiplier = d_lambda;
     if (tangent) {

@@ -36,7 +36,7 @@ inline constexpr double kYieldTolerance = 1e-9;
 /// Loading test tolerance on the cosine between n_f and the elastic stress increment (Sloan's LTOL).
 inline constexpr double kLoadingTolerance = 1e-6;
 inline constexpr double kMinStepFraction = 1e-9;  ///< smallest pseudo-time substep ΔT
-inline constexpr int kMaxSubsteps = 100000;       ///< more substeps than this in one increment: failure
+inline constexpr int kMaxSubsteps = 10000;        ///< more substeps than this in one increment: failure
 inline constexpr int kMaxPegasusIterations = 100;
 inline constexpr int kUnloadingScan = 16;  ///< subdivisions searched for the elastic part of an unloading step
 inline constexpr int kMaxDriftIterations = 5;
@@ -117,6 +117,20 @@ double correct_drift(const Model& model, Mat3& sigma, double& pc, Mat3& plastic_
   if (std::abs(model.normalized_yield(sigma, pc)) > kYieldTolerance) sigma = model.correct(sigma, pc);
   return total;
 }
+
+/// The fallback when error control cannot converge: the remaining strain by the model's implicit
+/// return from the current substep state, with the accumulated measures of the substeps before it.
+template <class Model>
+State finish_implicitly(const Model& model, const State& start, const Mat3& sigma, double pc,
+                        const Mat3& plastic_strain, double multiplier, const Mat3& remaining) {
+  State mid = start;
+  mid.stress = sigma;
+  mid.pc = pc;
+  accumulate_plastic_strain(mid, plastic_strain);
+  State next = implicit_update(model, mid, remaining);
+  next.plastic_multiplier = std::max(next.plastic_multiplier + multiplier, 0.0);
+  return next;
+}
 }  // namespace substep_detail
 
 /// One increment by error-controlled modified-Euler substepping. Works for any model that provides
@@ -140,7 +154,7 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
     if (model.beyond_tension_cutoff(trial)) {
       next.stress = model.correct(trial, start.pc);
       accumulate_plastic_strain(next, strain_increment - model.elasticity().at(p0).compliance(next.stress - start.stress));
-      next.plastic_multiplier = 0.0;
+      next.plastic_multiplier = std::sqrt(second_deviatoric_invariant(trial)) / model.elasticity().at(p0).G;
       return next;
     }
   }
@@ -187,8 +201,16 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
     double error = 0.5 * (r2.d_stress - r1.d_stress).norm() / std::max(sigma_new.norm(), kStressFloor);
     if (pc > 0.0) error = std::max(error, 0.5 * std::abs(model.harden(pc, r2.d_plastic_strain) - r1.pc) / pc_new);
     if (!std::isfinite(error)) throw IntegrationError("substep: non-finite stress in a substep");
+    if (error > tolerance && dT <= kMinStepFraction) {
+      if constexpr (requires { implicit_update(model, start, strain_increment); }) {
+        // The error does not decrease with the step (e.g. the D-P apex: the cone is scale-free):
+        // the rest of the increment by the model's closed-point projection.
+        return finish_implicitly(model, start, sigma, pc, plastic_strain, multiplier, (1.0 - T) * remaining);
+      } else {
+        throw IntegrationError("substep: substep below the minimum size");
+      }
+    }
     if (error > tolerance) {
-      if (dT <= kMinStepFraction) throw IntegrationError("substep: substep below the minimum size");
       dT = std::max(std::max(0.9 * std::sqrt(tolerance / error), 0.1) * dT, kMinStepFraction);
       rejected = true;
       continue;
@@ -199,8 +221,13 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
     multiplier += 0.5 * (r1.d_lambda + r2.d_lambda);
     multiplier += correct_drift(model, sigma, pc, plastic_strain);
     T += dT;
-    if (++substeps > kMaxSubsteps)
-      throw IntegrationError("substep: more than " + std::to_string(kMaxSubsteps) + " substeps in one increment");
+    if (++substeps > kMaxSubsteps && T < 1.0) {
+      if constexpr (requires { implicit_update(model, start, strain_increment); }) {
+        return finish_implicitly(model, start, sigma, pc, plastic_strain, multiplier, (1.0 - T) * remaining);
+      } else {
+        throw IntegrationError("substep: more than " + std::to_string(kMaxSubsteps) + " substeps in one increment");
+      }
+    }
     double growth = error > 0.0 ? std::min(0.9 * std::sqrt(tolerance / error), 1.1) : 1.1;
     if (rejected) growth = std::min(growth, 1.0);
     rejected = false;
