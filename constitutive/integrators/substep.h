@@ -36,7 +36,7 @@ inline constexpr double kYieldTolerance = 1e-9;
 /// Loading test tolerance on the cosine between n_f and the elastic stress increment (Sloan's LTOL).
 inline constexpr double kLoadingTolerance = 1e-6;
 inline constexpr double kMinStepFraction = 1e-9;  ///< smallest pseudo-time substep ΔT
-inline constexpr int kMaxSubsteps = 10000;        ///< more substeps than this in one increment: failure
+inline constexpr int kMaxSubsteps = 2000;  ///< more substeps than this: the rest by the implicit return (or failure)
 inline constexpr int kMaxPegasusIterations = 100;
 inline constexpr int kUnloadingScan = 16;  ///< subdivisions searched for the elastic part of an unloading step
 inline constexpr int kMaxDriftIterations = 5;
