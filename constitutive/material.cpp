@@ -30,6 +30,21 @@ Material load_material(const std::string& path) {
   return read_material(TableReader(*table, path, "material"));
 }
 
+Material with_integrator(const Material& material, Integrator integrator) {
+  return std::visit(
+      [integrator](const auto& model) -> Material {
+        using Model = std::decay_t<decltype(model)>;
+        if constexpr (requires { model.integrator(); }) {
+          typename Model::Params params = model.params();
+          params.integrator = integrator;
+          return Model(params);
+        } else {
+          return model;
+        }
+      },
+      material);
+}
+
 std::string_view model_name(const Material& material) {
   return std::visit([](const auto& model) { return std::decay_t<decltype(model)>::kName; }, material);
 }

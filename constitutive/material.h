@@ -27,6 +27,10 @@ Material read_material(const TableReader& table);
 /// Reads the `[material]` table of a TOML file (a material file or a scene file).
 Material load_material(const std::string& path);
 
+/// A copy of `material` that integrates its stress with `integrator` (models without a plastic
+/// update, i.e. linear elasticity, are returned unchanged).
+Material with_integrator(const Material& material, Integrator integrator);
+
 std::string_view model_name(const Material& material);
 double density(const Material& material);
 

@@ -3,10 +3,15 @@
 /// Each subcommand of `soilsph` lives in its own file and registers itself on the root app here.
 /// A subcommand is thin: it parses options and calls the libraries.
 #include <CLI/CLI.hpp>
+#include <string_view>
 
 namespace soilsph::cli {
 
 void add_material_command(CLI::App& app);
 void add_stress_test_command(CLI::App& app);
+
+/// `soilsph point`'s integrator when --integrator is not given.
+inline constexpr std::string_view kDefaultPointIntegrator = "explicit";
+void add_point_command(CLI::App& app);
 
 }  // namespace soilsph::cli

@@ -1,0 +1,158 @@
+// The mixed-control driver and the load paths: imposed stresses held, linear-elastic paths against
+// Hooke's law (for the driver and the CVODE reference), strain paths against the built-in paths.
+#include <catch2/catch.hpp>
+
+#include "materials.h"
+#include "verification/paths/load_path.h"
+#include "verification/point_test.h"
+
+using namespace soilsph;
+using namespace soilsph::verification;
+
+namespace {
+PointTest make_test(LoadPath path, std::vector<double> targets, int increments) {
+  PointTest t;
+  t.path = path;
+  t.strain_targets = std::move(targets);
+  t.increments = increments;
+  return t;
+}
+}  // namespace
+
+TEST_CASE("drained triaxial: the driver holds the radial stress to 1e-10 relative", "[driver]") {
+  const std::string integrator = GENERATE("explicit", "cvode");
+  // Load, unload, reload: the legs cross first yield, elastic unloading and re-yielding.
+  PointTest test = make_test(LoadPath::TriaxialDrained, {0.3, 0.15, 0.35}, 100);
+  const std::vector<Material> materials = {test::drucker_prager(), test::drucker_prager(5e3, 10.0),
+                                           test::cam_clay(), test::cam_clay(Elasticity::Kind::Constant)};
+  for (const Material& material : materials) {
+    for (double ocr : {1.0, 4.0}) {
+      test.ocr = ocr;
+      const PointCurve curve = run_point_test(material, test, integrator);
+      REQUIRE(curve.size() == 301);
+      for (const PointRecord& r : curve)
+        REQUIRE(std::abs(r.sig_r - test.p_initial) <= 1e-10 * test.p_initial);
+      // Not trivially held: the axial stress moved well away from the radial one.
+      REQUIRE(curve[100].sig_a > 1.5 * test.p_initial);
+    }
+  }
+}
+
+TEST_CASE("drained triaxial with huge explicit increments: damped Newton still holds the radial stress",
+          "[driver]") {
+  // OCR 30 in 7 increments of 0.029: the explicit update's residual is kinked and plain Newton
+  // from the elastic guess cycles; the backtracking fallback converges.
+  PointTest test = make_test(LoadPath::TriaxialDrained, {0.2}, 7);
+  test.ocr = 30.0;
+  const PointCurve curve = run_point_test(test::cam_clay(), test, "explicit");
+  REQUIRE(curve.size() == 8);
+  for (const PointRecord& r : curve) CHECK(std::abs(r.sig_r - test.p_initial) <= 1e-10 * test.p_initial);
+}
+
+TEST_CASE("linear elastic drained triaxial: q = E eps_a, eps_r = -nu eps_a", "[driver][elastic]") {
+  const std::string integrator = GENERATE("explicit", "cvode");
+  const double E = 2.5e6, nu = 0.27;
+  const PointCurve curve = run_point_test(
+      test::linear_elastic(E, nu), make_test(LoadPath::TriaxialDrained, {0.02, -0.01, 0.01}, 10), integrator);
+  REQUIRE(curve.size() == 31);
+  for (const PointRecord& r : curve) {
+    CHECK(r.q == Approx(E * r.eps_a).margin(1e-9 * E * 0.02));
+    CHECK(r.eps_r == Approx(-nu * r.eps_a).margin(1e-12));
+    CHECK(r.p == Approx(100e3 + E * r.eps_a / 3.0).epsilon(1e-12));
+    CHECK(r.u == 0.0);
+  }
+  CHECK(curve[10].eps_a == Approx(0.02).epsilon(1e-12));
+  CHECK(curve[20].eps_a == Approx(-0.01).epsilon(1e-12));
+  CHECK(curve[30].eps_a == Approx(0.01).epsilon(1e-12));
+}
+
+TEST_CASE("linear elastic oedometer: constrained modulus and K0 = nu/(1-nu)", "[driver][elastic]") {
+  const std::string integrator = GENERATE("explicit", "cvode");
+  const double E = 2.5e6, nu = 0.27;
+  const PointCurve curve =
+      run_point_test(test::linear_elastic(E, nu), make_test(LoadPath::Oedometer, {0.01}, 10), integrator);
+  const double constrained = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  const double k0 = nu / (1 - nu);
+  REQUIRE(curve.size() == 11);
+  for (std::size_t k = 1; k < curve.size(); ++k) {
+    const PointRecord& r = curve[k];
+    CHECK((r.sig_a - 100e3) / r.eps_a == Approx(constrained).epsilon(1e-10));
+    CHECK((r.sig_r - 100e3) / (r.sig_a - 100e3) == Approx(k0).epsilon(1e-10));
+    CHECK(r.eps_r == Approx(0.0).margin(1e-15));
+    CHECK(r.eps_v == Approx(r.eps_a).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("linear elastic undrained triaxial: p' constant, q = 3G eps_q, u = q/3", "[driver][elastic]") {
+  const std::string integrator = GENERATE("explicit", "cvode");
+  const double E = 2.5e6, nu = 0.27, G = E / (2 * (1 + nu));
+  const PointCurve curve = run_point_test(test::linear_elastic(E, nu),
+                                          make_test(LoadPath::TriaxialUndrained, {0.01}, 10), integrator);
+  for (const PointRecord& r : curve) {
+    CHECK(r.eps_v == Approx(0.0).margin(1e-15));
+    CHECK(r.eps_q == Approx(r.eps_a).epsilon(1e-12));  // ε_r = −ε_a/2
+    CHECK(r.p == Approx(100e3).epsilon(1e-12));
+    CHECK(r.q == Approx(3 * G * r.eps_q).margin(1e-9 * E));
+    CHECK(r.u == Approx(r.q / 3).margin(1e-9 * E));
+  }
+}
+
+TEST_CASE("linear elastic isotropic: p = p_i + K eps_v", "[driver][elastic]") {
+  const std::string integrator = GENERATE("explicit", "cvode");
+  const double E = 2.5e6, nu = 0.27, K = E / (3 * (1 - 2 * nu));
+  const PointCurve curve = run_point_test(test::linear_elastic(E, nu),
+                                          make_test(LoadPath::Isotropic, {0.03, 0.01}, 10), integrator);
+  REQUIRE(curve.size() == 21);
+  for (const PointRecord& r : curve) {
+    CHECK(r.p == Approx(100e3 + K * r.eps_v).epsilon(1e-12));
+    CHECK(r.q == Approx(0.0).margin(1e-9 * E));
+    CHECK(r.eps_a == Approx(r.eps_v / 3).margin(1e-15));
+  }
+  CHECK(curve[10].eps_v == Approx(0.03).epsilon(1e-12));
+  CHECK(curve[20].eps_v == Approx(0.01).epsilon(1e-12));
+}
+
+TEST_CASE("a strain path reproduces the built-in path with the same increments", "[driver][strain-path]") {
+  const std::string integrator = GENERATE("explicit", "cvode");
+  const Material material = test::cam_clay();
+  const PointTest undrained = make_test(LoadPath::TriaxialUndrained, {0.05}, 50);
+  PointTest path = make_test(LoadPath::StrainPath, {}, 1);
+  Mat3 d = Mat3::Zero();
+  d.diagonal() << -0.001, 0.0005, 0.0005;  // ε_a = 0.05 in 50 increments at constant volume
+  path.strain_increments.assign(50, d);
+  const PointCurve a = run_point_test(material, undrained, integrator);
+  const PointCurve b = run_point_test(material, path, integrator);
+  REQUIRE(a.size() == b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    CHECK(b[k].eps_a == Approx(a[k].eps_a).epsilon(1e-12));
+    CHECK(b[k].q == Approx(a[k].q).epsilon(1e-8));
+    CHECK(b[k].p == Approx(a[k].p).epsilon(1e-8));
+    CHECK(b[k].p_c == Approx(a[k].p_c).epsilon(1e-8));
+    CHECK(b[k].u == 0.0);  // the strain path reports no pore pressure
+  }
+  CHECK(a.back().q > 50e3);  // the clay yielded
+}
+
+TEST_CASE("invalid tests are rejected with the offending field named", "[driver][validation]") {
+  const Material material = test::cam_clay();
+  PointTest t;
+  t.ocr = 0.5;
+  CHECK_THROWS_WITH(run_point_test(material, t, "explicit"), Catch::Contains("ocr"));
+  t = PointTest{};
+  t.p_initial = -1.0;
+  CHECK_THROWS_WITH(run_point_test(material, t, "explicit"), Catch::Contains("p_initial"));
+  t = PointTest{};
+  t.increments = 0;
+  CHECK_THROWS_WITH(run_point_test(material, t, "explicit"), Catch::Contains("increments"));
+  t = PointTest{};
+  t.strain_targets = {0.1, 0.1};
+  CHECK_THROWS_WITH(run_point_test(material, t, "explicit"), Catch::Contains("zero length"));
+  t = PointTest{};
+  t.path = LoadPath::StrainPath;
+  CHECK_THROWS_WITH(run_point_test(material, t, "explicit"), Catch::Contains("no increments"));
+  CHECK_THROWS_WITH(run_point_test(material, PointTest{}, "nonsense"), Catch::Contains("nonsense"));
+  CHECK_THROWS_WITH(parse_load_path("triaxial"), Catch::Contains("triaxial-drained"));
+  for (LoadPath p : {LoadPath::TriaxialDrained, LoadPath::TriaxialUndrained, LoadPath::Oedometer,
+                     LoadPath::Isotropic, LoadPath::StrainPath})
+    CHECK(parse_load_path(load_path_name(p)) == p);
+}

@@ -1,0 +1,136 @@
+#pragma once
+/// @file
+/// Mixed control at one material point, in the spirit of MTest: each Voigt component has either
+/// its strain or its stress imposed (paths/load_path.h). Each increment solves for the free strain
+/// components by Newton's method on the imposed stresses,
+///   r(Δε_f) = σ_f(σ_n, Δε_i, Δε_f) − σ_f*,   Δε_f ← Δε_f − T_ff⁻¹ r,
+/// with T the algorithmic tangent of one update (constitutive/tangent.h: the model's consistent
+/// tangent, else central differences), until ‖r‖∞ ≤ tolerance · max(‖σ_f*‖∞, 10⁻³ ‖σ‖∞) (relative to
+/// the imposed stresses; the floor covers imposed zero stresses). The first guess is the elastic
+/// solution at σ_n. Templated on the model: called once per run from a std::visit.
+#include <cmath>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include "constitutive/tangent.h"
+#include "verification/driver/mixed_control_algebra.h"
+#include "verification/driver/point_history.h"
+
+namespace soilsph::verification {
+
+struct MixedControlOptions {
+  double tolerance = 1e-10;  ///< relative residual of the imposed stresses
+  int max_iterations = 50;
+};
+
+namespace detail {
+/// The update for a trial strain increment and its residual on the imposed stresses (‖·‖∞, Pa).
+struct Trial {
+  State state;
+  Vec6 residual = Vec6::Zero();
+  double norm = 0.0;
+};
+
+template <class Model>
+Trial evaluate(const Model& model, const State& state, const Partition& part, const Vec6& target,
+               const Vec6& strain_increment) {
+  Trial t{model.update(state, strain_from_voigt(strain_increment), Mat3::Zero())};
+  const Vec6 sigma = stress_to_voigt(t.state.stress);
+  for (int a = 0; a < part.n_free; ++a) {
+    t.residual(part.free[a]) = sigma(part.free[a]) - target(part.free[a]);
+    t.norm = std::max(t.norm, std::abs(t.residual(part.free[a])));
+  }
+  return t;
+}
+
+/// Newton from the elastic guess; with `damped`, each step is halved until the residual decreases.
+template <class Model>
+std::optional<Trial> solve_increment(const Model& model, const State& state, const Partition& part,
+                                     const Leg& leg, const Vec6& target, Vec6& strain_increment,
+                                     const MixedControlOptions& options, bool damped) {
+  const Vec6 sigma_n = stress_to_voigt(state.stress);
+  strain_increment = leg.increment;
+  solve_free(voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part, target - sigma_n,
+             strain_increment);
+  Trial trial = evaluate(model, state, part, target, strain_increment);
+  if (part.n_free == 0) return trial;
+  double imposed_scale = 0.0;
+  for (int a = 0; a < part.n_free; ++a)
+    imposed_scale = std::max(imposed_scale, std::abs(target(part.free[a])));
+  constexpr int kMaxHalvings = 30;
+  for (int iteration = 0;; ++iteration) {
+    const double scale = std::max(imposed_scale, 1e-3 * trial.state.stress.cwiseAbs().maxCoeff());
+    if (trial.norm <= options.tolerance * scale) return trial;
+    if (iteration == options.max_iterations || !std::isfinite(trial.norm)) return std::nullopt;
+    // Newton: T_ff δ_f = −r_f with the strain-imposed entries held (δ_i = 0).
+    const Mat6 tangent = algorithmic_tangent(model, state, strain_from_voigt(strain_increment));
+    Vec6 correction = Vec6::Zero();
+    solve_free(tangent, part, -trial.residual, correction);
+    double step = 1.0;
+    for (int halving = 0;; ++halving, step *= 0.5) {
+      Trial next = evaluate(model, state, part, target, strain_increment + step * correction);
+      if (!damped || next.norm < trial.norm || halving == kMaxHalvings) {
+        strain_increment += step * correction;
+        trial = std::move(next);
+        break;
+      }
+    }
+  }
+}
+}  // namespace detail
+
+/// One increment of `leg` from `state` to the imposed stresses `target` (Voigt; only the
+/// stress-imposed entries are used): returns the new state and sets `strain_increment` (Voigt,
+/// engineering shears) to the imposed and solved components. Plain Newton first; if it fails,
+/// Newton damped by backtracking, because a discrete update need not be smooth (with large
+/// increments the explicit scheme's residual has kinks and several branches). Throws
+/// std::runtime_error if neither reaches the tolerance.
+template <class Model>
+State mixed_control_increment(const Model& model, const State& state, const Leg& leg, const Vec6& target,
+                              Vec6& strain_increment, const MixedControlOptions& options = {}) {
+  const Partition part(leg);
+  for (bool damped : {false, true}) {
+    if (auto solved =
+            detail::solve_increment(model, state, part, leg, target, strain_increment, options, damped))
+      return solved->state;
+  }
+  throw std::runtime_error("mixed control: Newton did not converge on the imposed stresses in " +
+                           std::to_string(options.max_iterations) +
+                           " iterations, plain or damped (more increments may help)");
+}
+
+/// Runs every leg from `initial`: one sample per increment, the initial state first. The imposed
+/// stresses are accumulated as targets (not added to the last solved stress), so the residuals
+/// left by each Newton solve do not drift.
+template <class Model>
+PointHistory drive_mixed_control(const Model& model, const State& initial, std::span<const Leg> legs,
+                                 const MixedControlOptions& options = {}) {
+  PointHistory history{{Mat3::Zero(), initial}};
+  Vec6 target = stress_to_voigt(initial.stress);
+  std::array<bool, 6> held{};
+  for (std::size_t l = 0; l < legs.size(); ++l) {
+    for (int k = 0; k < legs[l].increments; ++k) {
+      const PointSample& last = history.back();
+      // A component that becomes stress-imposed starts from the stress it has reached.
+      const Vec6 current = stress_to_voigt(last.state.stress);
+      for (int c = 0; c < 6; ++c) {
+        if (!legs[l].stress_imposed[c]) continue;
+        target(c) = (held[c] ? target(c) : current(c)) + legs[l].increment(c);
+      }
+      held = legs[l].stress_imposed;
+      Vec6 strain_increment;
+      try {
+        State next = mixed_control_increment(model, last.state, legs[l], target, strain_increment, options);
+        history.push_back({last.strain + strain_from_voigt(strain_increment), next});
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string(e.what()) + " in increment " + std::to_string(k + 1) +
+                                 " of leg " + std::to_string(l + 1));
+      }
+    }
+  }
+  return history;
+}
+
+}  // namespace soilsph::verification

@@ -1,0 +1,34 @@
+#pragma once
+/// @file
+/// Load paths as data: each path is a list of legs, and each leg says, for every Voigt component
+/// (xx, yy, zz, xy, yz, xz; voigt.h), whether the stress or the strain is imposed and by how much per
+/// increment. The mixed-control driver and the CVODE reference both consume legs, so they solve
+/// exactly the same problem.
+#include <array>
+#include <vector>
+
+#include "constitutive/voigt.h"
+#include "verification/point_test.h"
+
+namespace soilsph::verification {
+
+/// One leg: `increments` equal increments of a constant control.
+struct Leg {
+  /// true: the stress component is imposed (its strain is free); false: the strain is imposed.
+  std::array<bool, 6> stress_imposed{};
+  /// Per increment, tension-positive: the strain increment (Voigt, engineering shears) of
+  /// strain-imposed components, the stress increment (Pa) of stress-imposed components.
+  Vec6 increment = Vec6::Zero();
+  int increments = 1;
+};
+
+/// The legs of `test` (validated: p_initial > 0, ocr ≥ 1, increments ≥ 1, legs of non-zero length,
+/// a non-empty strain path); throws std::invalid_argument naming the offending field.
+///  - triaxial-drained:   ε_xx driven, σ_yy, σ_zz held (stress imposed, zero increment), shear strains 0;
+///  - triaxial-undrained: ε_xx driven, ε_yy = ε_zz = −ε_xx/2 (ε_v = 0), shear strains 0;
+///  - oedometer:          ε_xx driven, all other strains 0;
+///  - isotropic:          ε_xx = ε_yy = ε_zz = −ε_v/3 driven, shear strains 0;
+///  - strain-path:        every strain component imposed, one increment per given tensor.
+std::vector<Leg> build_legs(const PointTest& test);
+
+}  // namespace soilsph::verification

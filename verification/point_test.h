@@ -1,0 +1,55 @@
+#pragma once
+/// @file
+/// The material-point test: one load path (triaxial, oedometer, isotropic or a strain-path file)
+/// applied to one material with a chosen integrator, or with the CVODE reference. Inputs and outputs
+/// are compression-positive and SI; internally the driver works tension-positive (tensor.h).
+/// Axes: axial = x (index 0), radial = y and z (indices 1, 2).
+#include <ostream>
+#include <string_view>
+#include <vector>
+
+#include "constitutive/material.h"
+
+namespace soilsph::verification {
+
+/// The laboratory paths the driver knows (see paths/load_path.h for what each imposes).
+enum class LoadPath { TriaxialDrained, TriaxialUndrained, Oedometer, Isotropic, StrainPath };
+
+/// One test: path, initial state and loading programme.
+struct PointTest {
+  LoadPath path = LoadPath::TriaxialDrained;
+  double p_initial = 100e3;                    ///< Pa, initial isotropic effective stress
+  double ocr = 1.0;                            ///< MCC: p_c0 = ocr * p_initial
+  std::vector<double> strain_targets = {0.1};  ///< targets of the driven strain, compression-positive
+                                               ///< (axial for triaxial/oedometer, volumetric for isotropic)
+  int increments = 100;                        ///< increments per leg
+  std::vector<Mat3> strain_increments;         ///< StrainPath only: tension-positive increments
+};
+
+/// One row per increment including the initial state; compression-positive, SI.
+/// eps_q = 2/3 (eps_a − eps_r); q = √(3 J2) with the sign of sig_a − sig_r (so q = sig_a − sig_r
+/// on axisymmetric states, negative in triaxial extension); p_c = 0 for models without one;
+/// u = undrained excess pore pressure (radial total stress constant), 0 on drained paths.
+struct PointRecord {
+  double eps_a, eps_r, eps_v, eps_q, sig_a, sig_r, p, q, p_c, u;
+};
+using PointCurve = std::vector<PointRecord>;
+
+/// `integrator` is "cvode" (the reference) or any name accepted by parse_integrator().
+/// Throws std::invalid_argument for an invalid test or integrator name, std::runtime_error when an
+/// increment cannot be solved.
+PointCurve run_point_test(const Material& material, const PointTest& test, std::string_view integrator);
+
+/// CSV with a '#' header comment line (conventions/units) then the column row
+/// eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u (more columns may follow).
+void write_point_csv(std::ostream& out, const PointCurve& curve);
+
+/// "triaxial-drained", "triaxial-undrained", "oedometer", "isotropic", "strain-path";
+/// throws std::invalid_argument otherwise.
+LoadPath parse_load_path(std::string_view name);
+/// The name parse_load_path() accepts for `path`.
+std::string_view load_path_name(LoadPath path);
+/// The integrator name of the CVODE reference.
+inline constexpr std::string_view kReferenceIntegrator = "cvode";
+
+}  // namespace soilsph::verification
