@@ -9,6 +9,7 @@ namespace soilsph::cli {
 
 void add_material_command(CLI::App& app);
 void add_stress_test_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
 
 /// `soilsph point`'s integrator when --integrator is not given.
 inline constexpr std::string_view kDefaultPointIntegrator = "explicit";

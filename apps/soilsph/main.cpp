@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "soilsph 0.1.0");
   soilsph::cli::add_material_command(app);
   soilsph::cli::add_stress_test_command(app);
+  soilsph::cli::add_bench_command(app);
   soilsph::cli::add_point_command(app);
   try {
     app.parse(argc, argv);

@@ -62,7 +62,8 @@ class DruckerPrager {
 
   /// Integrates one increment (strain and spin) with the chosen scheme.
   State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
-  /// ∂σ/∂Δε of update() without spin: analytic for `implicit`, central differences otherwise.
+  /// ∂σ/∂Δε of update() without spin: central differences for `explicit`; the analytic consistent
+  /// tangent of `implicit` for `implicit` and (as a close approximation of its own) for `substep`.
   Mat6 consistent_tangent(const State& state, const Mat3& strain_increment) const;
 
  private:

@@ -66,7 +66,8 @@ class ModifiedCamClay {
   Mat3 correct(const Mat3& sigma, double pc) const;
 
   State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
-  /// ∂σ/∂Δε of update() without spin: analytic for `implicit`, central differences otherwise.
+  /// ∂σ/∂Δε of update() without spin: central differences for `explicit`; the analytic consistent
+  /// tangent of `implicit` for `implicit` and (as a close approximation of its own) for `substep`.
   Mat6 consistent_tangent(const State& state, const Mat3& strain_increment) const;
 
  private:
