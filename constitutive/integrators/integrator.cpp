@@ -22,8 +22,8 @@ Integrator parse_integrator(std::string_view name) {
   throw std::invalid_argument("unknown integrator \"" + std::string(name) + "\"");
 }
 
-Integrator read_integrator(const TableReader& table) {
-  return parse_integrator(table.choice_or("integrator", "explicit", kIntegratorNames));
+Integrator read_integrator(const TableReader& table, Integrator fallback) {
+  return parse_integrator(table.choice_or("integrator", integrator_name(fallback), kIntegratorNames));
 }
 
 double read_substep_tolerance(const TableReader& table) {

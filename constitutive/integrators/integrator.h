@@ -25,8 +25,9 @@ Integrator parse_integrator(std::string_view name);
 inline constexpr double kDefaultSubstepTolerance = 1e-6;
 
 class TableReader;
-/// Reads the optional `integrator` key of a material table (default "explicit").
-Integrator read_integrator(const TableReader& table);
+/// Reads the optional `integrator` key of a material table; `fallback` when absent (each model's
+/// default is the scheme with the best accuracy for its cost in docs/integrators.md).
+Integrator read_integrator(const TableReader& table, Integrator fallback);
 /// Reads the optional `substep_tolerance` key (default kDefaultSubstepTolerance, 1e-12 ≤ value ≤ 1e-2).
 double read_substep_tolerance(const TableReader& table);
 

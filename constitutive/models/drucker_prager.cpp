@@ -21,7 +21,7 @@ DruckerPragerParams DruckerPragerParams::read(const TableReader& t) {
   p.friction_angle = t.number("friction_angle", Range::open(0.0, 90.0), "degrees");
   p.cohesion = t.number_or("cohesion", 0.0, Range::non_negative(), "Pa");
   p.dilatancy_angle = t.number_or("dilatancy_angle", 0.0, Range::closed(0.0, p.friction_angle), "degrees");
-  p.integrator = read_integrator(t);
+  p.integrator = read_integrator(t, kDefaultIntegrator);
   p.substep_tolerance = read_substep_tolerance(t);
   return p;
 }

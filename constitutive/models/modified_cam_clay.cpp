@@ -22,7 +22,7 @@ ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
   } else {
     p.elastic_pressure_floor = t.number_or("elastic_pressure_floor", 1.0e3, Range::positive(), "Pa");
   }
-  p.integrator = read_integrator(t);
+  p.integrator = read_integrator(t, kDefaultIntegrator);
   p.substep_tolerance = read_substep_tolerance(t);
   return p;
 }
