@@ -210,7 +210,8 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
     if (pc > 0.0) error = std::max(error, 0.5 * std::abs(model.harden(pc, r2.d_plastic_strain) - r1.pc) / pc_new);
     // A non-finite rate (Δλ → ∞ where softening cancels the elastic stiffness, p_c overflowing) is
     // a rejected substep: a smaller one is finite.
-    if (!std::isfinite(error) || !sigma_new.allFinite() || !(pc_new > 0.0)) error = std::numeric_limits<double>::infinity();
+    if (!std::isfinite(error) || !sigma_new.allFinite() || (pc > 0.0 && !(pc_new > 0.0)))
+      error = std::numeric_limits<double>::infinity();
     if (error > tolerance && dT <= kMinStepFraction) {
       if constexpr (requires { implicit_update(model, start, strain_increment); }) {
         // The error does not decrease with the step (e.g. the D-P apex: the cone is scale-free):
