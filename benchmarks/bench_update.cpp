@@ -15,7 +15,9 @@ struct Case {
   Mat3 increment;
 };
 
-Mat3 triaxial(double axial) { return Vec3(-axial, 0.3 * axial, 0.3 * axial).asDiagonal(); }
+Mat3 triaxial(double axial) {
+  return Vec3(-axial, 0.3 * axial, 0.3 * axial).asDiagonal();
+}
 
 /// An elastic and a plastic starting point for each model (the plastic one on the surface).
 template <class Model>
@@ -62,9 +64,12 @@ int main(int argc, char** argv) {
   const auto materials = stress_test_materials();
   const std::string short_names[] = {"dp", "dp-cohesive", "mcc", "mcc-constant-E"};
   for (std::size_t k = 0; k < materials.size(); ++k) {
-    std::visit([&](const auto& model) {
-      if constexpr (!std::is_same_v<std::decay_t<decltype(model)>, LinearElastic>) register_model(short_names[k], model);
-    }, materials[k].second);
+    std::visit(
+        [&](const auto& model) {
+          if constexpr (!std::is_same_v<std::decay_t<decltype(model)>, LinearElastic>)
+            register_model(short_names[k], model);
+        },
+        materials[k].second);
   }
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

@@ -54,7 +54,8 @@ std::string check(const Model& model, const State& s, const StressTestOptions& o
     return "non-finite state";
   const double f = model.normalized_yield(s.stress, s.pc);
   r.max_yield = std::max(r.max_yield, f);
-  if (!(f <= options.yield_tolerance)) return "outside the yield surface (normalized f = " + std::to_string(f) + ")";
+  if (!(f <= options.yield_tolerance))
+    return "outside the yield surface (normalized f = " + std::to_string(f) + ")";
   if (!(s.plastic_multiplier >= 0.0)) return "negative plastic multiplier";
   if constexpr (std::is_same_v<Model, ModifiedCamClay>) {
     if (!(s.pc > 0.0)) return "p_c <= 0";
@@ -77,7 +78,8 @@ void classify(const Model& model, const State& s, StressTestResult& r) {
   }
 }
 
-void record(StressTestResult& r, long k, const std::string& what, const State& s, const Mat3& d_eps, const Mat3& d_spin) {
+void record(StressTestResult& r, long k, const std::string& what, const State& s, const Mat3& d_eps,
+            const Mat3& d_spin) {
   r.first_problem = "increment " + std::to_string(k) + ": " + what;
   r.problem_start = s;
   r.problem_strain = d_eps;
@@ -133,7 +135,8 @@ StressTestResult walk(const Model& model, const StressTestOptions& options) {
 }
 }  // namespace
 
-StressTestResult run_stress_test(const Material& material, Integrator integrator, const StressTestOptions& options) {
+StressTestResult run_stress_test(const Material& material, Integrator integrator,
+                                 const StressTestOptions& options) {
   return std::visit(
       [&](const auto& model) -> StressTestResult {
         using Model = std::decay_t<decltype(model)>;
@@ -156,7 +159,8 @@ std::vector<std::pair<std::string, Material>> stress_test_materials() {
   dp_cohesive.cohesion = 5e3, dp_cohesive.dilatancy_angle = 10.0;
   ModifiedCamClay::Params mcc{};  // Table 1
   mcc.density = 2000.0, mcc.poisson_ratio = 0.3, mcc.friction_angle = 35.0, mcc.compression_index = 0.085;
-  mcc.swelling_index = 0.019, mcc.initial_void_ratio = 0.68, mcc.elasticity = Elasticity::Kind::PressureDependent;
+  mcc.swelling_index = 0.019, mcc.initial_void_ratio = 0.68,
+  mcc.elasticity = Elasticity::Kind::PressureDependent;
   mcc.young_modulus = 1.0e6, mcc.elastic_pressure_floor = 1.0e3;
   ModifiedCamClay::Params mcc_constant = mcc;
   mcc_constant.elasticity = Elasticity::Kind::Constant;

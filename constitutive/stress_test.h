@@ -28,24 +28,25 @@ struct StressTestOptions {
 
 struct StressTestResult {
   long increments = 0;
-  long plastic = 0;             ///< increments with Δλ > 0
-  long extension = 0;           ///< increments with a positive (tensile) volume change
-  long unloading = 0;           ///< increments of a reversed segment
-  long at_apex = 0;             ///< D-P: increments ending at the apex (s = 0 and f = 0)
-  long near_zero_pressure = 0;  ///< MCC: increments ending with p' < 0.01 p_c
-  long near_critical_state = 0; ///< MCC: plastic increments ending with |q/(M p') − 1| < 0.05
-  long failures = 0;            ///< IntegrationError thrown (counted, then the walk restarts)
-  long violations = 0;          ///< increments that broke a check
-  double max_yield = -1e300;    ///< largest normalized yield value seen
+  long plastic = 0;                   ///< increments with Δλ > 0
+  long extension = 0;                 ///< increments with a positive (tensile) volume change
+  long unloading = 0;                 ///< increments of a reversed segment
+  long at_apex = 0;                   ///< D-P: increments ending at the apex (s = 0 and f = 0)
+  long near_zero_pressure = 0;        ///< MCC: increments ending with p' < 0.01 p_c
+  long near_critical_state = 0;       ///< MCC: plastic increments ending with |q/(M p') − 1| < 0.05
+  long failures = 0;                  ///< IntegrationError thrown (counted, then the walk restarts)
+  long violations = 0;                ///< increments that broke a check
+  double max_yield = -1e300;          ///< largest normalized yield value seen
   double min_pressure_ratio = 1e300;  ///< MCC: smallest p'/p_c seen
-  std::string first_problem;    ///< description of the first failure or violation
-  State problem_start;          ///< the state before that increment (to reproduce it)
+  std::string first_problem;          ///< description of the first failure or violation
+  State problem_start;                ///< the state before that increment (to reproduce it)
   Mat3 problem_strain = Mat3::Zero(), problem_spin = Mat3::Zero();  ///< and the increment
-  double seconds = 0.0;         ///< wall time of the walk
+  double seconds = 0.0;                                             ///< wall time of the walk
 };
 
 /// Runs the walk for `material` with its integrator replaced by `integrator` (not for linear elastic).
-StressTestResult run_stress_test(const Material& material, Integrator integrator, const StressTestOptions& options);
+StressTestResult run_stress_test(const Material& material, Integrator integrator,
+                                 const StressTestOptions& options);
 
 /// The materials the stress test covers: Table 1 D-P (c = 0, ψ = 0), a cohesive dilatant D-P
 /// (c = 5 kPa, ψ = 10°), Table 1 MCC with pressure-dependent and with constant elasticity.

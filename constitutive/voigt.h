@@ -40,7 +40,9 @@ inline Mat3 strain_from_voigt(Vec6 v) {
 namespace soilsph {
 
 /// The 6×6 matrix of the fourth-order tensor a ⊗ b acting on a Voigt strain: (a ⊗ b) : dε = a (b : dε).
-inline Mat6 voigt_outer(const Mat3& a, const Mat3& b) { return stress_to_voigt(a) * stress_to_voigt(b).transpose(); }
+inline Mat6 voigt_outer(const Mat3& a, const Mat3& b) {
+  return stress_to_voigt(a) * stress_to_voigt(b).transpose();
+}
 
 /// The deviatoric projector 𝕀_dev (dε ↦ dev dε) from Voigt strain to Voigt stress.
 inline Mat6 voigt_deviatoric_projector() {

@@ -103,14 +103,16 @@ std::vector<WorkPrecisionRow> work_precision(const std::string& material_name, c
 }
 
 void write_work_precision_csv(std::ostream& out, const std::vector<WorkPrecisionRow>& rows) {
-  out << "# work-precision of the stress integrators against the CVODE reference; p and q compression-positive; "
-         "error_q = max_k |q_k - q_ref,k| / max_k |q_ref,k| over the path (same for p); cpu_seconds = median CPU "
+  out << "# work-precision of the stress integrators against the CVODE reference; p and q "
+         "compression-positive; "
+         "error_q = max_k |q_k - q_ref,k| / max_k |q_ref,k| over the path (same for p); cpu_seconds = median "
+         "CPU "
          "time of one path (s)\n";
   out << "material,path,integrator,increments,error_q,error_p,cpu_seconds,repeats\n";
   out << std::setprecision(6);
   for (const auto& r : rows)
-    out << r.material << ',' << r.path << ',' << r.integrator << ',' << r.increments << ',' << r.error_q << ','
-        << r.error_p << ',' << r.cpu_seconds << ',' << r.repeats << '\n';
+    out << r.material << ',' << r.path << ',' << r.integrator << ',' << r.increments << ',' << r.error_q
+        << ',' << r.error_p << ',' << r.cpu_seconds << ',' << r.repeats << '\n';
 }
 
 }  // namespace soilsph::verification

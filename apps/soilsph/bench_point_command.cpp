@@ -20,7 +20,8 @@ void add_bench_command(CLI::App& app) {
   auto* bench = app.add_subcommand("bench", "Benchmarks");
   bench->require_subcommand(1);
   auto* point = bench->add_subcommand(
-      "point", "Work-precision of explicit, substep and implicit against CVODE on triaxial and oedometer paths");
+      "point",
+      "Work-precision of explicit, substep and implicit against CVODE on triaxial and oedometer paths");
   struct Options {
     std::string out = "results/bench-point";
     std::string data = ".";
@@ -30,7 +31,8 @@ void add_bench_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   point->add_option("--out", o->out, "output directory (work_precision.csv)")->capture_default_str();
   point->add_option("--root", o->data, "project root holding data/materials/")->capture_default_str();
-  point->add_option("--increments", o->increments, "increment counts (default 1,2,5,...,10000)")->delimiter(',');
+  point->add_option("--increments", o->increments, "increment counts (default 1,2,5,...,10000)")
+      ->delimiter(',');
   point->add_option("--min-seconds", o->min_seconds, "CPU time to spend per measurement (median of repeats)")
       ->capture_default_str();
   point->callback([o] {
@@ -46,8 +48,9 @@ void add_bench_command(CLI::App& app) {
         PointTest test;  // p_initial 100 kPa, OCR 1, to eps_a = 0.1
         test.path = path;
         const auto part = work_precision(name, material, test, options, [](const WorkPrecisionRow& r) {
-          std::printf("%-11s %-19s %-15s %6d  err_q %.3e  err_p %.3e  %.3e s\n", r.material.c_str(), r.path.c_str(),
-                      r.integrator.c_str(), r.increments, r.error_q, r.error_p, r.cpu_seconds);
+          std::printf("%-11s %-19s %-15s %6d  err_q %.3e  err_p %.3e  %.3e s\n", r.material.c_str(),
+                      r.path.c_str(), r.integrator.c_str(), r.increments, r.error_q, r.error_p,
+                      r.cpu_seconds);
           std::fflush(stdout);
         });
         rows.insert(rows.end(), part.begin(), part.end());

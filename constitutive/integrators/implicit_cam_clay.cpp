@@ -9,9 +9,9 @@ namespace soilsph {
 
 namespace {
 constexpr int kMaxIterations = 100;
-constexpr double kYieldTolerance = 1e-13;  ///< |f| / (M p_c)² at convergence
-constexpr double kRelativeStep = 1e-15;    ///< bracket width relative to the root at convergence
-constexpr double kAbsoluteVolume = 1e-20;  ///< plastic volume below which v is converged absolutely
+constexpr double kYieldTolerance = 1e-13;     ///< |f| / (M p_c)² at convergence
+constexpr double kRelativeStep = 1e-15;       ///< bracket width relative to the root at convergence
+constexpr double kAbsoluteVolume = 1e-20;     ///< plastic volume below which v is converged absolutely
 constexpr double kResidualTolerance = 1e-14;  ///< |r1| relative to its terms at convergence
 const double kSqrt3Over2 = std::sqrt(1.5);
 
@@ -86,17 +86,20 @@ class CamClayReturn {
         v = 0.5 * (lo + hi);
         continue;
       }
-      if (std::abs(r) <= kResidualTolerance * (std::abs(x.v) + l * M2_ * (2.0 * std::abs(x.p) + x.pc))) return x;
+      if (std::abs(r) <= kResidualTolerance * (std::abs(x.v) + l * M2_ * (2.0 * std::abs(x.p) + x.pc)))
+        return x;
       (r < 0.0 ? lo : hi) = v;
       // Newton, bisecting when it leaves the bracket or is slower than bisection: a step larger than
       // half the one before last (rtsafe, Numerical Recipes §9.4; Newton creeps down exp(θ v)).
       const double step = r / r1_v(x);
       double next = v - step;
-      if (!std::isfinite(next) || next <= lo || next >= hi || 2.0 * std::abs(step) > std::abs(step_before_last))
+      if (!std::isfinite(next) || next <= lo || next >= hi ||
+          2.0 * std::abs(step) > std::abs(step_before_last))
         next = 0.5 * (lo + hi);
       step_before_last = last_step;
       last_step = next - v;
-      if (std::abs(next - v) <= kRelativeStep * std::abs(v) + kAbsoluteVolume || hi - lo <= kRelativeStep * std::abs(v) + kAbsoluteVolume)
+      if (std::abs(next - v) <= kRelativeStep * std::abs(v) + kAbsoluteVolume ||
+          hi - lo <= kRelativeStep * std::abs(v) + kAbsoluteVolume)
         return at(next, l);
       v = next;
     }

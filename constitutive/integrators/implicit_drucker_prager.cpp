@@ -4,7 +4,8 @@
 
 namespace soilsph {
 
-State implicit_update(const DruckerPrager& model, const State& start, const Mat3& strain_increment, Mat6* tangent) {
+State implicit_update(const DruckerPrager& model, const State& start, const Mat3& strain_increment,
+                      Mat6* tangent) {
   const Moduli D = model.elasticity().at(0.0);
   const Mat3 trial = start.stress + D.stiffness(strain_increment);
   State next = start;
@@ -27,7 +28,8 @@ State implicit_update(const DruckerPrager& model, const State& start, const Mat3
   const double sqrt_j2_next = model.k_c() - alpha * I1_next;
   if (sqrt_j2_next > 0.0) {  // return to the cone
     next.stress = sqrt_j2_next / sqrt_j2 * s_trial + I1_next / 3.0 * Mat3::Identity();
-    accumulate_plastic_strain(next, d_lambda * (s_trial / (2.0 * sqrt_j2) + 3.0 * sin_psi * Mat3::Identity()));
+    accumulate_plastic_strain(next,
+                              d_lambda * (s_trial / (2.0 * sqrt_j2) + 3.0 * sin_psi * Mat3::Identity()));
     next.plastic_multiplier = d_lambda;
     if (tangent) {
       // σ = σ_tr − Δλ(√2 G n + 9K sinψ I), n = s_tr/‖s_tr‖, ‖s_tr‖ = √2 √J2_tr:

@@ -41,9 +41,12 @@ inline constexpr double kMinStepFraction = 1e-9;  ///< smallest pseudo-time subs
 /// modified-Euler substep count grows like STOL^-1/2); beyond: the rest by the implicit return (or failure).
 /// 2000 covers a 0.1 strain increment of the Table 1 clay at 1e-6 (about 1000 substeps).
 inline constexpr double kMaxSubstepsAtMicro = 2000.0;
-inline double max_substeps(double tolerance) { return kMaxSubstepsAtMicro * std::max(1.0, std::sqrt(1e-6 / tolerance)); }
+inline double max_substeps(double tolerance) {
+  return kMaxSubstepsAtMicro * std::max(1.0, std::sqrt(1e-6 / tolerance));
+}
 inline constexpr int kMaxPegasusIterations = 100;
-inline constexpr int kUnloadingScan = 16;  ///< subdivisions searched for the elastic part of an unloading step
+inline constexpr int kUnloadingScan =
+    16;  ///< subdivisions searched for the elastic part of an unloading step
 inline constexpr int kMaxDriftIterations = 5;
 /// Stresses below this norm (Pa) are compared absolutely in the error estimate (a stress-free state).
 inline constexpr double kStressFloor = 1.0;
@@ -158,7 +161,8 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
   if constexpr (requires { model.beyond_tension_cutoff(trial); }) {
     if (model.beyond_tension_cutoff(trial)) {
       next.stress = model.correct(trial, start.pc);
-      accumulate_plastic_strain(next, strain_increment - model.elasticity().at(p0).compliance(next.stress - start.stress));
+      accumulate_plastic_strain(
+          next, strain_increment - model.elasticity().at(p0).compliance(next.stress - start.stress));
       next.plastic_multiplier = std::sqrt(second_deviatoric_invariant(trial)) / model.elasticity().at(p0).G;
       return next;
     }
@@ -207,7 +211,8 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
     const Mat3 d_plastic = 0.5 * (r1.d_plastic_strain + r2.d_plastic_strain);
     const double pc_new = model.harden(pc, d_plastic);
     double error = 0.5 * (r2.d_stress - r1.d_stress).norm() / std::max(sigma_new.norm(), stress_scale);
-    if (pc > 0.0) error = std::max(error, 0.5 * std::abs(model.harden(pc, r2.d_plastic_strain) - r1.pc) / pc_new);
+    if (pc > 0.0)
+      error = std::max(error, 0.5 * std::abs(model.harden(pc, r2.d_plastic_strain) - r1.pc) / pc_new);
     // A non-finite rate (Δλ → ∞ where softening cancels the elastic stiffness, p_c overflowing) is
     // a rejected substep: a smaller one is finite.
     if (!std::isfinite(error) || !sigma_new.allFinite() || (pc > 0.0 && !(pc_new > 0.0)))
@@ -236,7 +241,8 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
       if constexpr (requires { implicit_update(model, start, strain_increment); }) {
         return finish_implicitly(model, start, sigma, pc, plastic_strain, multiplier, (1.0 - T) * remaining);
       } else {
-        throw IntegrationError("substep: more than " + std::to_string(max_substeps(tolerance)) + " substeps in one increment");
+        throw IntegrationError("substep: more than " + std::to_string(max_substeps(tolerance)) +
+                               " substeps in one increment");
       }
     }
     double growth = error > 0.0 ? std::min(0.9 * std::sqrt(tolerance / error), 1.1) : 1.1;

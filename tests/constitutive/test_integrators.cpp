@@ -26,7 +26,9 @@ void check_tangent(const Model& model, const State& state, const Mat3& d_eps) {
   CHECK((analytic - numeric).norm() <= 1e-6 * std::max(numeric.norm(), 1.0));
 }
 
-Mat3 diagonal(double a, double b, double c) { return Vec3(a, b, c).asDiagonal(); }
+Mat3 diagonal(double a, double b, double c) {
+  return Vec3(a, b, c).asDiagonal();
+}
 }  // namespace
 
 TEST_CASE("implicit consistent tangent matches central differences of the update", "[integrators][tangent]") {
@@ -38,7 +40,7 @@ TEST_CASE("implicit consistent tangent matches central differences of the update
       check_tangent(dp, s, diagonal(-1e-4, 0.5e-4, 0.3e-4));  // elastic
       Mat3 shear = diagonal(-6e-2, 3e-2, 1.5e-2);
       shear(0, 1) = shear(1, 0) = 3e-3;
-      check_tangent(dp, s, shear);                                  // cone
+      check_tangent(dp, s, shear);  // cone
       REQUIRE(dp.update(s, shear, Mat3::Zero()).plastic_multiplier > 0.0);
       const Mat3 extension = diagonal(5e-2, 4e-2, 4e-2) + 1e-3 * Mat3::Ones();
       check_tangent(dp, s, extension);  // apex: σ fixed, zero tangent
@@ -53,8 +55,8 @@ TEST_CASE("implicit consistent tangent matches central differences of the update
       nc.pc = 100e3;
       Mat3 triaxial = diagonal(-1e-2, 0.2e-2, 0.2e-2);
       triaxial(1, 2) = triaxial(2, 1) = 1e-3;
-      check_tangent(mcc, nc, triaxial);                               // wet side, hardening
-      check_tangent(mcc, nc, diagonal(1e-3, 1e-3, 1e-3));             // elastic unloading
+      check_tangent(mcc, nc, triaxial);                    // wet side, hardening
+      check_tangent(mcc, nc, diagonal(1e-3, 1e-3, 1e-3));  // elastic unloading
       State oc = nc;
       oc.stress = isotropic_stress(30e3);
       const Mat3 dry = diagonal(-8e-2, 4e-2, 4e-2);
@@ -84,7 +86,8 @@ TEST_CASE("the same increment applied to the same state gives the same stress bi
   }
 }
 
-TEST_CASE("substep and implicit follow the MCC NCL much tighter than explicit", "[integrators][closed-form]") {
+TEST_CASE("substep and implicit follow the MCC NCL much tighter than explicit",
+          "[integrators][closed-form]") {
   // Isotropic loading on the NCL: ε_v = λ/(1+e0) ln(p/p_i), so p = p_i exp(ε_v (1+e0)/λ), p_c = p.
   const auto params = test::table1_cam_clay(Elasticity::Kind::PressureDependent);
   const double lambda_star = params.compression_index / (1 + params.initial_void_ratio);
@@ -100,8 +103,8 @@ TEST_CASE("substep and implicit follow the MCC NCL much tighter than explicit", 
   };
   const double e_explicit = error(Integrator::Explicit), e_substep = error(Integrator::Substep),
                e_implicit = error(Integrator::Implicit);
-  INFO("relative error in p after " << n << " increments: explicit " << e_explicit << ", substep " << e_substep
-                                    << ", implicit " << e_implicit);
+  INFO("relative error in p after " << n << " increments: explicit " << e_explicit << ", substep "
+                                    << e_substep << ", implicit " << e_implicit);
   CHECK(e_implicit <= 1e-12);  // backward Euler with exact hardening and elasticity is exact on the NCL
   CHECK(e_substep <= 1e-5);    // local tolerance 1e-6 per substep
   CHECK(e_explicit > 1e-3);    // first order: the 10-increment error of the paper's scheme

@@ -13,10 +13,10 @@ TEST_CASE("stress test: 1e5 random increments per model and integrator keep ever
   for (const auto& [name, material] : stress_test_materials()) {
     for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
       const StressTestResult r = run_stress_test(material, scheme, options);
-      INFO(name << ", " << integrator_name(scheme) << ": " << r.plastic << " plastic, " << r.extension << " extension, "
-                << r.unloading << " unloading, " << r.at_apex << " at apex, " << r.near_zero_pressure << " near p'=0, "
-                << r.near_critical_state << " near CSL, max f " << r.max_yield << ", " << r.seconds << " s; "
-                << r.first_problem);
+      INFO(name << ", " << integrator_name(scheme) << ": " << r.plastic << " plastic, " << r.extension
+                << " extension, " << r.unloading << " unloading, " << r.at_apex << " at apex, "
+                << r.near_zero_pressure << " near p'=0, " << r.near_critical_state << " near CSL, max f "
+                << r.max_yield << ", " << r.seconds << " s; " << r.first_problem);
       CHECK(r.increments == options.increments);
       CHECK(r.failures == 0);
       CHECK(r.violations == 0);
