@@ -164,3 +164,30 @@ TEST_CASE("substep meets its error tolerance on a large triaxial-like increment"
     CHECK(std::abs(one.pc / reference.pc - 1) <= 20 * tolerance);
   }
 }
+
+TEST_CASE("integrator and substep_tolerance keys: names, defaults and range", "[integrators][parameters]") {
+  const std::string dp =
+      "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\nyoung_modulus = 1.0e6\n"
+      "poisson_ratio = 0.3\nfriction_angle = 35.0\n";
+  const std::string mcc =
+      "[material]\nmodel = \"modified-cam-clay\"\ndensity = 2000.0\npoisson_ratio = 0.3\n"
+      "friction_angle = 35.0\ncompression_index = 0.085\nswelling_index = 0.019\n"
+      "initial_void_ratio = 0.68\n";
+  auto read = [](const std::string& text) {
+    const toml::table root = toml::parse(text);
+    return read_material(TableReader(*root["material"].as_table(), "case.toml", "material"));
+  };
+  CHECK(std::get<DruckerPrager>(read(dp)).integrator() == Integrator::Implicit);
+  CHECK(std::get<ModifiedCamClay>(read(mcc)).integrator() == Integrator::Substep);
+  CHECK(std::get<ModifiedCamClay>(read(mcc)).substep_tolerance() == kDefaultSubstepTolerance);
+  for (std::string_view name : kIntegratorNames) {
+    CHECK(integrator_name(parse_integrator(name)) == name);
+    const Material m = read(mcc + "integrator = \"" + std::string(name) + "\"\nsubstep_tolerance = 1e-8\n");
+    CHECK(integrator_name(std::get<ModifiedCamClay>(m).integrator()) == name);
+    CHECK(std::get<ModifiedCamClay>(m).substep_tolerance() == 1e-8);
+  }
+  CHECK_THROWS_WITH(read(dp + "substep_tolerance = 0.5\n"),
+                    Catch::Contains("case.toml: [material] substep_tolerance = 0.5 is out of range") &&
+                        Catch::Contains("1e-12 <= value <= 0.01"));
+  CHECK_THROWS_AS(parse_integrator("rk4"), std::invalid_argument);
+}
