@@ -18,7 +18,10 @@
 ///     σ ← σ − δλ D:n_g, p_c ← p_c(δλ n_g), δλ = f/(n_f:D:n_g + H); the normal correction
 ///     σ ← σ − f n_f/(n_f:n_f) if that does not reduce |f|; the model's own geometric correction as a
 ///     last resort), so every substep ends on the surface within FTOL.
-/// Too many substeps, or a step below the minimum size, throws IntegrationError (never a NaN).
+/// Too many substeps, or a step below the minimum size with the error still above STOL, hands the rest
+/// of the increment to the model's closest-point projection (`implicit_update`; D-P and MCC have one:
+/// needed at the D-P apex, where the error does not fall with the step); a model without one throws
+/// IntegrationError. No path returns a NaN.
 /// A model with a tension cut-off (`beyond_tension_cutoff(trial)`, the D-P apex) returns its
 /// `correct()` state when the elastic trial lies past the cut-off: see docs/integrators.md for why that
 /// is exact for D-P with ψ = 0 and why no explicit substep can resolve the apex kink anyway.
@@ -220,7 +223,7 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
     if (error > tolerance && dT <= kMinStepFraction) {
       if constexpr (requires { implicit_update(model, start, strain_increment); }) {
         // The error does not decrease with the step (e.g. the D-P apex: the cone is scale-free):
-        // the rest of the increment by the model's closed-point projection.
+        // the rest of the increment by the model's closest-point projection.
         return finish_implicitly(model, start, sigma, pc, plastic_strain, multiplier, (1.0 - T) * remaining);
       } else {
         throw IntegrationError("substep: substep below the minimum size");
