@@ -33,7 +33,7 @@ Material load_point_material(const PointOptions& o) {
   return read_material(TableReader(*table, o.material_path, "material"));
 }
 
-void run(const PointOptions& o, bool strain_max_given) {
+void run(const PointOptions& o, bool legs_given) {
   using namespace verification;
   verification::PointTest test;
   // `--test strain-path:FILE` is accepted as a shorthand for `--test strain-path --strain-path FILE`.
@@ -46,7 +46,10 @@ void run(const PointOptions& o, bool strain_max_given) {
   test.path = parse_load_path(name);
   if (test.path == LoadPath::StrainPath) {
     if (strain_path.empty()) throw std::invalid_argument("--test strain-path needs --strain-path FILE");
-    if (strain_max_given) throw std::invalid_argument("--strain-max does not apply to --test strain-path");
+    if (legs_given)
+      throw std::invalid_argument(
+          "--strain-max and --increments do not apply to --test strain-path (one "
+          "increment per row of the file)");
     test.strain_increments = read_strain_path_file(strain_path);
   } else if (!strain_path.empty()) {
     throw std::invalid_argument("--strain-path applies to --test strain-path only");
@@ -94,9 +97,9 @@ void add_point_command(CLI::App& app) {
                                      "(axial; volumetric for isotropic), e.g. 0.1,0.05,0.15")
                          ->delimiter(',')
                          ->capture_default_str();
-  cmd->add_option("--increments", o->increments, "increments per leg")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  auto* increments = cmd->add_option("--increments", o->increments, "increments per leg")
+                         ->capture_default_str()
+                         ->check(CLI::PositiveNumber);
   std::string integrators;
   for (std::string_view name : kIntegratorNames) integrators += std::string(name) + ", ";
   cmd->add_option("--integrator", o->integrator,
@@ -105,7 +108,7 @@ void add_point_command(CLI::App& app) {
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,
                   "override a material key, e.g. --set material.friction_angle=30 (repeatable)");
-  cmd->callback([o, strain_max] { run(*o, strain_max->count() > 0); });
+  cmd->callback([o, strain_max, increments] { run(*o, strain_max->count() + increments->count() > 0); });
 }
 
 }  // namespace soilsph::cli

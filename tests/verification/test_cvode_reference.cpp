@@ -109,3 +109,36 @@ TEST_CASE("explicit converges to cvode at first order (MCC drained and undrained
     }
   }
 }
+
+TEST_CASE("cvode: isotropic extension to the D-P apex", "[cvode]") {
+  // Elastic until p = 0 (the apex for c = 0, eq 31), reached at ε_v = −p_i/K.
+  const double K = 1e6 / (3 * (1 - 2 * 0.3));
+  const PointTest test = make_test(LoadPath::Isotropic, {-0.2}, 10);
+  SECTION("with dilatancy the stress stays at the apex") {
+    const PointCurve curve = run_point_test(test::drucker_prager(0.0, 10.0), test, "cvode");
+    for (const PointRecord& r : curve) {
+      CHECK(r.p == Approx(std::max(100e3 + K * r.eps_v, 0.0)).margin(1e-6 * 100e3));
+      CHECK(r.q == Approx(0.0).margin(1e-6 * 100e3));
+    }
+  }
+  SECTION("without dilatancy the flow rule has no solution there: a clear error, not NaN") {
+    CHECK_THROWS_WITH(run_point_test(test::drucker_prager(0.0, 0.0), test, "cvode"), Catch::Contains("apex"));
+  }
+}
+
+TEST_CASE("cvode: no continuum solution past an MCC dry-side snap-back is an error", "[cvode]") {
+  // Table 1 constants with constant E, OCR 4, undrained: p' stays at p_i until first yield at
+  // q² = M² p (p_c − p); there n:D:n + H < 0 (derivations: n:D:n = K M⁴(2p − p_c)² + 12 G q²,
+  // H = (1+e0)/(λ−κ) p p_c M⁴ (2p − p_c)), so plastic loading under strain control is impossible.
+  const ModifiedCamClay mcc = test::cam_clay(Elasticity::Kind::Constant);
+  const double p = 100e3, pc = 400e3, M = mcc.M();
+  const double q2 = M * M * p * (pc - p);
+  const Moduli D = mcc.elasticity().at(p);
+  const double ndn = D.K * std::pow(M, 4) * std::pow(2 * p - pc, 2) + 12 * D.G * q2;
+  const double H = mcc.hardening_exponent() * p * pc * std::pow(M, 4) * (2 * p - pc);
+  REQUIRE(ndn + H < 0.0);
+  CHECK_THROWS_WITH(run_point_test(mcc, make_test(LoadPath::TriaxialUndrained, {0.3}, 30, 4.0), "cvode"),
+                    Catch::Contains("no continuum solution"));
+  // The same clay at OCR 1.5 (wet side) is fine.
+  CHECK_NOTHROW(run_point_test(mcc, make_test(LoadPath::TriaxialUndrained, {0.3}, 30, 1.5), "cvode"));
+}

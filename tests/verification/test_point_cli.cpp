@@ -95,6 +95,7 @@ TEST_CASE("soilsph point rejects invalid options and files with a message", "[cl
       {material + " --test strain-path", "--strain-path"},
       {material + " --test strain-path --strain-path " + bad_path.string(), "bad.csv:2"},
       {material + " --test isotropic --strain-path " + bad_path.string(), "strain-path"},
+      {material + " --test strain-path:" + bad_path.string() + " --increments 3", "do not apply"},
       {bad_material.string() + " --test isotropic", "density"},
       {material + " --test isotropic --out /nonexistent/dir/out.csv", "/nonexistent/dir/out.csv"},
       {dir.path.string() + "/missing.toml --test isotropic", "missing.toml"},

@@ -129,6 +129,7 @@ TEST_CASE("a strain path reproduces the built-in path with the same increments",
     CHECK(b[k].p == Approx(a[k].p).epsilon(1e-8));
     CHECK(b[k].p_c == Approx(a[k].p_c).epsilon(1e-8));
     CHECK(b[k].u == 0.0);  // the strain path reports no pore pressure
+    CHECK(a[k].u == Approx(a[k].q / 3 - (a[k].p - undrained.p_initial)).margin(1e-9 * undrained.p_initial));
   }
   CHECK(a.back().q > 50e3);  // the clay yielded
 }
@@ -155,4 +156,18 @@ TEST_CASE("invalid tests are rejected with the offending field named", "[driver]
   for (LoadPath p : {LoadPath::TriaxialDrained, LoadPath::TriaxialUndrained, LoadPath::Oedometer,
                      LoadPath::Isotropic, LoadPath::StrainPath})
     CHECK(parse_load_path(load_path_name(p)) == p);
+}
+
+TEST_CASE("with_integrator replaces the scheme and keeps every other parameter", "[driver]") {
+  const Material mcc = with_integrator(test::cam_clay(), parse_integrator("explicit"));
+  REQUIRE(std::holds_alternative<ModifiedCamClay>(mcc));
+  const auto& m = std::get<ModifiedCamClay>(mcc);
+  CHECK(m.integrator() == Integrator::Explicit);
+  CHECK(m.M() == test::cam_clay().M());
+  CHECK(m.hardening_exponent() == test::cam_clay().hardening_exponent());
+  CHECK(m.elasticity().at(50e3).K == test::cam_clay().elasticity().at(50e3).K);
+  const Material dp = with_integrator(test::drucker_prager(5e3, 10.0), Integrator::Explicit);
+  CHECK(std::get<DruckerPrager>(dp).k_c() == test::drucker_prager(5e3, 10.0).k_c());
+  const Material le = with_integrator(test::linear_elastic(3e6), Integrator::Explicit);
+  CHECK(std::get<LinearElastic>(le).params().young_modulus == 3e6);
 }

@@ -9,6 +9,7 @@
 /// the imposed stresses; the floor covers imposed zero stresses). The first guess is the elastic
 /// solution at σ_n. Templated on the model: called once per run from a std::visit.
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -27,6 +28,8 @@ struct MixedControlOptions {
 
 namespace detail {
 /// The update for a trial strain increment and its residual on the imposed stresses (‖·‖∞, Pa).
+/// An update that fails (a scheme's std::runtime_error, e.g. no convergence for this trial) gives
+/// an infinite residual, so that damped Newton backs off from it.
 struct Trial {
   State state;
   Vec6 residual = Vec6::Zero();
@@ -35,8 +38,15 @@ struct Trial {
 
 template <class Model>
 Trial evaluate(const Model& model, const State& state, const Partition& part, const Vec6& target,
-               const Vec6& strain_increment) {
-  Trial t{model.update(state, strain_from_voigt(strain_increment), Mat3::Zero())};
+               const Vec6& strain_increment, std::string& update_error) {
+  Trial t;
+  try {
+    t.state = model.update(state, strain_from_voigt(strain_increment), Mat3::Zero());
+  } catch (const std::runtime_error& e) {
+    t.norm = std::numeric_limits<double>::infinity();
+    update_error = e.what();
+    return t;
+  }
   const Vec6 sigma = stress_to_voigt(t.state.stress);
   for (int a = 0; a < part.n_free; ++a) {
     t.residual(part.free[a]) = sigma(part.free[a]) - target(part.free[a]);
@@ -49,13 +59,13 @@ Trial evaluate(const Model& model, const State& state, const Partition& part, co
 template <class Model>
 std::optional<Trial> solve_increment(const Model& model, const State& state, const Partition& part,
                                      const Leg& leg, const Vec6& target, Vec6& strain_increment,
-                                     const MixedControlOptions& options, bool damped) {
+                                     const MixedControlOptions& options, bool damped,
+                                     std::string& update_error) {
   const Vec6 sigma_n = stress_to_voigt(state.stress);
   strain_increment = leg.increment;
   solve_free(voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part, target - sigma_n,
              strain_increment);
-  Trial trial = evaluate(model, state, part, target, strain_increment);
-  if (part.n_free == 0) return trial;
+  Trial trial = evaluate(model, state, part, target, strain_increment, update_error);
   double imposed_scale = 0.0;
   for (int a = 0; a < part.n_free; ++a)
     imposed_scale = std::max(imposed_scale, std::abs(target(part.free[a])));
@@ -70,7 +80,7 @@ std::optional<Trial> solve_increment(const Model& model, const State& state, con
     solve_free(tangent, part, -trial.residual, correction);
     double step = 1.0;
     for (int halving = 0;; ++halving, step *= 0.5) {
-      Trial next = evaluate(model, state, part, target, strain_increment + step * correction);
+      Trial next = evaluate(model, state, part, target, strain_increment + step * correction, update_error);
       if (!damped || next.norm < trial.norm || halving == kMaxHalvings) {
         strain_increment += step * correction;
         trial = std::move(next);
@@ -91,14 +101,20 @@ template <class Model>
 State mixed_control_increment(const Model& model, const State& state, const Leg& leg, const Vec6& target,
                               Vec6& strain_increment, const MixedControlOptions& options = {}) {
   const Partition part(leg);
+  if (part.n_free == 0) {  // strain control: one update, whose errors propagate as they are
+    strain_increment = leg.increment;
+    return model.update(state, strain_from_voigt(strain_increment), Mat3::Zero());
+  }
+  std::string update_error;
   for (bool damped : {false, true}) {
-    if (auto solved =
-            detail::solve_increment(model, state, part, leg, target, strain_increment, options, damped))
+    if (auto solved = detail::solve_increment(model, state, part, leg, target, strain_increment, options,
+                                              damped, update_error))
       return solved->state;
   }
   throw std::runtime_error("mixed control: Newton did not converge on the imposed stresses in " +
                            std::to_string(options.max_iterations) +
-                           " iterations, plain or damped (more increments may help)");
+                           " iterations, plain or damped (more increments may help)" +
+                           (update_error.empty() ? "" : "; the update failed: " + update_error));
 }
 
 /// Runs every leg from `initial`: one sample per increment, the initial state first. The imposed

@@ -5,7 +5,10 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-#include <memory>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +36,7 @@ struct Rates {
   Vec6 strain = Vec6::Zero();
   double pc = 0.0;
   double plastic_multiplier = 0.0;  ///< λ̇, 0 on the elastic branch
+  bool defined = true;              ///< false where n_f:D:n_g + H ≤ 0: no plastic solution
 };
 
 template <class Model>
@@ -51,6 +55,11 @@ Rates rates(const Model& model, const Leg& leg, const Partition& part, const Vec
       const Vec6 a = stress_to_voigt(D.stiffness(n_g));  // D : n_g
       b = stress_to_voigt(D.stiffness(n_f));             // n_f : D, paired with engineering strain rates
       denominator = ddot(n_f, D.stiffness(n_g)) + model.hardening_modulus(sigma, pc);
+      if (!(denominator > 0.0)) {
+        Rates undefined;
+        undefined.defined = false;
+        return undefined;
+      }
       C -= a * b.transpose() / denominator;
     }
   }
@@ -89,6 +98,13 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   auto& problem = *static_cast<Problem<Model>*>(data);
   const double* v = N_VGetArrayPointer(y);
   const Rates r = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc], problem.plastic);
+  if (!r.defined) {
+    problem.last_error =
+        "the plastic modulus n_f:D:n_g + H is not positive, so plastic loading has no continuum solution "
+        "from this state (the Drucker-Prager apex with psi = 0, or Cam-Clay softening on the dry side that "
+        "outweighs the elastic stiffness)";
+    return -1;  // unrecoverable
+  }
   double* d = N_VGetArrayPointer(ydot);
   Eigen::Map<Vec6>{d} = r.stress;
   Eigen::Map<Vec6>{d + kStrain} = r.strain;
@@ -116,9 +132,9 @@ int switching_function(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
 
 template <class Model>
 void record_error(int code, const char* module, const char* function, char* message, void* data) {
-  if (code < 0) {
-    static_cast<Problem<Model>*>(data)->last_error = std::string(module) + " " + function + ": " + message;
-  }
+  if (code >= 0) return;  // warnings
+  std::string& last = static_cast<Problem<Model>*>(data)->last_error;
+  last = std::string(module) + " " + function + ": " + message + (last.empty() ? "" : " (" + last + ")");
 }
 
 /// Owns the SUNDIALS objects of one run.
@@ -144,8 +160,9 @@ struct Solver {
 template <class Model>
 void check(int flag, const char* what, const Problem<Model>& problem) {
   if (flag >= 0) return;
-  std::string message =
-      std::string("cvode reference: ") + what + " failed (" + CVodeGetReturnFlagName(flag) + ")";
+  char* name = CVodeGetReturnFlagName(flag);  // malloc'd by SUNDIALS
+  std::string message = std::string("cvode reference: ") + what + " failed (" + name + ")";
+  std::free(name);
   if (!problem.last_error.empty()) message += ": " + problem.last_error;
   throw std::runtime_error(message);
 }
@@ -216,7 +233,8 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
           // A root a hair before the output time (e.g. reloading to the previous turning point,
           // which falls on an increment): CVODE cannot start on such an interval, and one Euler
           // step over it is exact to (k − t)² ≤ 1e-18 of an increment.
-          right_hand_side<Model>(t, s.y, s.rates, &problem);
+          if (right_hand_side<Model>(t, s.y, s.rates, &problem) != 0)
+            throw std::runtime_error("cvode reference: " + problem.last_error);
           N_VLinearSum(1.0, s.y, k - t, s.rates, s.y);
           t = k;
           check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
@@ -228,8 +246,11 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
         if (flag != CV_ROOT_RETURN) break;
         if (switches > 100)
           throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
-        // Switch branch at the root and restart there, so no step straddles the kink.
-        problem.plastic = !problem.plastic;
+        // Switch branch at the root and restart there, so no step straddles the kink: to elastic
+        // where λ̇ reached 0; to plastic where f reached 0 unless the loading is tangential and
+        // turns inwards (then the state stays elastic).
+        problem.plastic = !problem.plastic && starts_plastic(model, leg, problem.part, stress_of(y), y[kPc],
+                                                             std::numeric_limits<double>::infinity());
         direction = problem.plastic ? -1 : 1;
         check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
         check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
