@@ -15,7 +15,7 @@
 namespace soilsph {
 
 struct ModifiedCamClayParams {
-  /// Input default: error-controlled substepping reaches a given error ≤ 1e-4 24–94× cheaper than
+  /// Input default: error-controlled substepping reaches a given error ≤ 1e-4 18–69× cheaper than
   /// `explicit` on the work-precision paths (docs/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Substep;
   double density;                 ///< kg/m³
