@@ -1,6 +1,7 @@
 // Cost of one material-point update, per model × integrator, for an elastic and a plastic step.
 // Every iteration applies the same increment to the same state, so the plastic cases stay plastic.
-// Increments of 1e-4 (the upper middle of what an SPH step produces, 1e-6 to 1e-3).
+// Increments of 1e-4 (the upper middle of what an SPH step produces, 1e-6 to 1e-3); the plastic step
+// also at 1e-6 and 1e-3 (labels plastic-1e-6, plastic-1e-3).
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -41,7 +42,12 @@ void register_model(const std::string& name, const Model& base) {
     params.integrator = scheme;
     const Model model(params);
     const auto [elastic, plastic] = cases(model);
-    for (const auto& [kind, c] : {std::pair{"elastic", elastic}, std::pair{"plastic", plastic}}) {
+    // The plastic step also at the ends of the SPH range of strain increments, 1e-6 and 1e-3.
+    const Case plastic_small{plastic.start, 1e-2 * plastic.increment};
+    const Case plastic_large{plastic.start, 10.0 * plastic.increment};
+    for (const auto& [kind, c] :
+         {std::pair{"elastic", elastic}, std::pair{"plastic", plastic},
+          std::pair{"plastic-1e-6", plastic_small}, std::pair{"plastic-1e-3", plastic_large}}) {
       const std::string label = name + "/" + std::string(integrator_name(scheme)) + "/" + kind;
       benchmark::RegisterBenchmark(label.c_str(), [model, c = c](benchmark::State& st) {
         State start = c.start;
