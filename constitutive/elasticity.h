@@ -46,6 +46,12 @@ class Elasticity {
   /// dp/dε_v = K(p) exactly (exponential above the floor, linear below it).
   double pressure_after(double p, double d_eps_v) const;
 
+  /// dK/dp and dG/dp of the tangent moduli at(p): zero for constant elasticity and below the floor.
+  Moduli slope_at(double p) const {
+    if (kind_ == Kind::Constant || p <= p_floor_) return {0.0, 0.0};
+    return {1.0 / kappa_star_, shear_from_bulk(1.0 / kappa_star_)};
+  }
+
   /// Secant moduli over an elastic volumetric strain dεv from p: K = Δp/Δε_v (the tangent for
   /// Δε_v → 0), G from K and ν. Equal to at(p) for constant elasticity.
   Moduli secant(double p, double d_eps_v) const;

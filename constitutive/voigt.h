@@ -36,3 +36,27 @@ inline Mat3 strain_from_voigt(Vec6 v) {
 }
 
 }  // namespace soilsph
+
+namespace soilsph {
+
+/// The 6×6 matrix of the fourth-order tensor a ⊗ b acting on a Voigt strain: (a ⊗ b) : dε = a (b : dε).
+inline Mat6 voigt_outer(const Mat3& a, const Mat3& b) {
+  return stress_to_voigt(a) * stress_to_voigt(b).transpose();
+}
+
+/// The deviatoric projector 𝕀_dev (dε ↦ dev dε) from Voigt strain to Voigt stress.
+inline Mat6 voigt_deviatoric_projector() {
+  Mat6 P = Mat6::Zero();
+  P.topLeftCorner<3, 3>().setConstant(-1.0 / 3.0);
+  for (int k = 0; k < 3; ++k) P(k, k) += 1.0, P(k + 3, k + 3) = 0.5;
+  return P;
+}
+
+/// The isotropic stiffness K 1⊗1 + 2G 𝕀_dev in Voigt form.
+inline Mat6 voigt_isotropic_stiffness(double K, double G) {
+  Mat6 D = 2.0 * G * voigt_deviatoric_projector();
+  D.topLeftCorner<3, 3>().array() += K;
+  return D;
+}
+
+}  // namespace soilsph

@@ -8,9 +8,11 @@
 namespace soilsph::cli {
 
 void add_material_command(CLI::App& app);
+void add_stress_test_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
 
 /// `soilsph point`'s integrator when --integrator is not given.
-inline constexpr std::string_view kDefaultPointIntegrator = "explicit";
+inline constexpr std::string_view kDefaultPointIntegrator = "substep";  // best accuracy for cost (docs/integrators.md)
 void add_point_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
 

@@ -10,6 +10,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "soilsph 0.1.0");
   soilsph::cli::add_material_command(app);
+  soilsph::cli::add_stress_test_command(app);
+  soilsph::cli::add_bench_command(app);
   soilsph::cli::add_point_command(app);
   soilsph::cli::add_verify_command(app);
   try {

@@ -15,6 +15,9 @@
 
 namespace soilsph {
 
+/// Lower bound of the plastic denominator relative to its elastic part n_f:D:n_g (see below).
+inline constexpr double kMinDenominatorFraction = 0.1;
+
 /// Works for any model that provides elasticity(), normalized_yield(), yield_gradient(),
 /// flow_direction(), hardening_modulus(), harden() and correct().
 template <class Model>
@@ -29,8 +32,14 @@ State explicit_update(const Model& model, const State& start, const Mat3& strain
     const Mat3 n_f = model.yield_gradient(sigma, start.pc);
     const Mat3 n_g = model.flow_direction(sigma, start.pc);
     const double numerator = ddot(n_f, elastic_stress_increment);
-    const double denominator = ddot(n_f, D.stiffness(n_g)) + model.hardening_modulus(sigma, start.pc);
-    if (numerator > 0.0 && denominator > 0.0) {
+    // With strong softening (MCC dry side, H → −n_f:D:n_g) the forward-Euler Δλ diverges and the
+    // exact hardening p_c·exp(θ tr Δε^p) underflows to 0 (found by the stress test). The
+    // denominator is therefore kept ≥ 0.1 n_f:D:n_g, i.e. Δλ at most 10× the perfectly plastic
+    // one; the correction then puts the state on the surface. Hardening steps are unaffected.
+    const double elastic_part = ddot(n_f, D.stiffness(n_g));
+    const double denominator =
+        std::max(elastic_part + model.hardening_modulus(sigma, start.pc), kMinDenominatorFraction * elastic_part);
+    if (numerator > 0.0 && elastic_part > 0.0) {
       d_lambda = numerator / denominator;
       plastic_flow = d_lambda * n_g;
     }

@@ -6,7 +6,10 @@
 #include <stdexcept>
 
 #include "constitutive/integrators/explicit_rate.h"
+#include "constitutive/integrators/implicit_cam_clay.h"
+#include "constitutive/integrators/implicit_drucker_prager.h"
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/integrators/substep.h"
 #include "constitutive/rotation.h"
 
 namespace soilsph {
@@ -17,6 +20,8 @@ State integrate(const Model& model, const State& state, const Mat3& strain_incre
   const State rotated = rotate_state(state, spin_increment);
   switch (model.integrator()) {
     case Integrator::Explicit: return explicit_update(model, rotated, strain_increment);
+    case Integrator::Substep: return substep_update(model, rotated, strain_increment);
+    case Integrator::Implicit: return implicit_update(model, rotated, strain_increment);
   }
   throw std::logic_error("integrate: unhandled integrator");
 }

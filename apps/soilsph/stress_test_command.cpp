@@ -1,0 +1,53 @@
+// `soilsph stress-test [--increments N] [--seed S]`: the long numerical-stability stress test.
+#include <cstdio>
+#include <iostream>
+
+#include "apps/soilsph/commands.h"
+#include "constitutive/stress_test.h"
+
+namespace soilsph::cli {
+
+void add_stress_test_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "stress-test",
+      "Random strain walks through every model with every integrator, checking each increment");
+  auto options = std::make_shared<StressTestOptions>();
+  options->increments = 10'000'000;
+  cmd->add_option("--increments", options->increments, "increments per model and integrator")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", options->seed, "random seed (the walk is reproducible)")->capture_default_str();
+  cmd->add_option("--max-increment", options->max_increment, "largest strain-increment norm")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6, 1.0));
+  cmd->callback([options] {
+    std::printf(
+        "# stress test: %ld increments per model x integrator, seed %llu, |d_eps| log-uniform in [1e-6, "
+        "%g]\n",
+        options->increments, static_cast<unsigned long long>(options->seed), options->max_increment);
+    std::printf(
+        "# checks: finite state, normalized f <= %g, Δλ >= 0; MCC p'/p_c >= -%g and p_c > 0 "
+        "(p' compression-positive)\n",
+        options->yield_tolerance, options->yield_tolerance);
+    std::printf("%-50s %-9s %10s %10s %9s %9s %9s %9s %8s %10s %11s %9s\n", "material", "scheme", "plastic",
+                "extension", "unloading", "apex", "p'<.01pc", "near-CSL", "failures", "violations", "max f",
+                "seconds");
+    long problems = 0;
+    for (const auto& [name, material] : stress_test_materials()) {
+      for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
+        const StressTestResult r = run_stress_test(material, scheme, *options);
+        std::printf("%-50s %-9s %10ld %10ld %9ld %9ld %9ld %9ld %8ld %10ld %11.3g %9.1f\n", name.c_str(),
+                    std::string(integrator_name(scheme)).c_str(), r.plastic, r.extension, r.unloading,
+                    r.at_apex, r.near_zero_pressure, r.near_critical_state, r.failures, r.violations,
+                    r.max_yield, r.seconds);
+        if (!r.first_problem.empty()) std::printf("#   first problem: %s\n", r.first_problem.c_str());
+        std::fflush(stdout);
+        problems += r.failures + r.violations;
+      }
+    }
+    std::printf("%s: %ld problems\n", problems == 0 ? "PASSED" : "FAILED", problems);
+    if (problems != 0) throw std::runtime_error("stress test: " + std::to_string(problems) + " problems");
+  });
+}
+
+}  // namespace soilsph::cli

@@ -1,0 +1,84 @@
+// Cost of one material-point update, per model × integrator, for an elastic and a plastic step.
+// Every iteration applies the same increment to the same state, so the plastic cases stay plastic.
+// Increments of 1e-4 (the upper middle of what an SPH step produces, 1e-6 to 1e-3); the plastic step
+// also at 1e-6 and 1e-3 (labels plastic-1e-6, plastic-1e-3).
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "constitutive/stress_test.h"
+
+using namespace soilsph;
+
+namespace {
+struct Case {
+  State start;
+  Mat3 increment;
+};
+
+Mat3 triaxial(double axial) {
+  return Vec3(-axial, 0.3 * axial, 0.3 * axial).asDiagonal();
+}
+
+/// An elastic and a plastic starting point for each model (the plastic one on the surface).
+template <class Model>
+std::pair<Case, Case> cases(const Model& model) {
+  State s;
+  if constexpr (std::is_same_v<Model, ModifiedCamClay>) {
+    s.stress = isotropic_stress(100e3);
+    s.pc = 100e3;  // normally consolidated: triaxial compression is plastic at once
+    return {{s, 1e-4 * Mat3::Identity()}, {s, triaxial(1e-4)}};
+  } else {
+    s.stress = isotropic_stress(20e3);
+    State on_cone = model.update(s, triaxial(5e-2), Mat3::Zero());  // sheared onto the cone
+    return {{s, -1e-5 * Mat3::Identity()}, {on_cone, triaxial(1e-4)}};
+  }
+}
+
+template <class Model>
+void register_model(const std::string& name, const Model& base) {
+  for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
+    auto params = base.params();
+    params.integrator = scheme;
+    const Model model(params);
+    const auto [elastic, plastic] = cases(model);
+    // The plastic step also at the ends of the SPH range of strain increments, 1e-6 and 1e-3.
+    const Case plastic_small{plastic.start, 1e-2 * plastic.increment};
+    const Case plastic_large{plastic.start, 10.0 * plastic.increment};
+    for (const auto& [kind, c] :
+         {std::pair{"elastic", elastic}, std::pair{"plastic", plastic},
+          std::pair{"plastic-1e-6", plastic_small}, std::pair{"plastic-1e-3", plastic_large}}) {
+      const std::string label = name + "/" + std::string(integrator_name(scheme)) + "/" + kind;
+      benchmark::RegisterBenchmark(label.c_str(), [model, c = c](benchmark::State& st) {
+        State start = c.start;
+        Mat3 increment = c.increment;
+        for (auto _ : st) {
+          benchmark::DoNotOptimize(start);
+          benchmark::DoNotOptimize(increment);
+          State next = model.update(start, increment, Mat3::Zero());
+          benchmark::DoNotOptimize(next);
+        }
+        const State probe = model.update(c.start, c.increment, Mat3::Zero());
+        st.counters["plastic"] = probe.plastic_multiplier > 0.0 ? 1.0 : 0.0;
+      });
+    }
+  }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const auto materials = stress_test_materials();
+  const std::string short_names[] = {"dp", "dp-cohesive", "mcc", "mcc-constant-E"};
+  for (std::size_t k = 0; k < materials.size(); ++k) {
+    std::visit(
+        [&](const auto& model) {
+          if constexpr (!std::is_same_v<std::decay_t<decltype(model)>, LinearElastic>)
+            register_model(short_names[k], model);
+        },
+        materials[k].second);
+  }
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

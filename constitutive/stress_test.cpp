@@ -1,0 +1,173 @@
+#include "constitutive/stress_test.h"
+
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+namespace soilsph {
+
+namespace {
+enum class Segment { Any, Extension, Compression, Shear, Reverse };
+
+/// A unit-norm symmetric direction with the character of the segment.
+Mat3 direction(std::mt19937_64& rng, Segment kind) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  Mat3 a;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) a(i, j) = a(j, i) = n(rng);
+  if (kind == Segment::Shear) a = deviator(a);
+  const double volume = std::abs(n(rng)) + 0.5;  // a clear volumetric part of the chosen sign
+  if (kind == Segment::Extension) a = deviator(a) + volume * Mat3::Identity();
+  if (kind == Segment::Compression) a = deviator(a) - volume * Mat3::Identity();
+  return a / a.norm();
+}
+
+Mat3 skew(std::mt19937_64& rng, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  Mat3 w = Mat3::Zero();
+  w(0, 1) = u(rng), w(0, 2) = u(rng), w(1, 2) = u(rng);
+  return w - w.transpose();
+}
+
+template <class Model>
+State fresh_state(const Model&, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  State s;
+  const double p = 1e3 * std::pow(200.0, u(rng));  // 1–200 kPa
+  s.stress = isotropic_stress(p);
+  if constexpr (std::is_same_v<Model, ModifiedCamClay>) s.pc = p * std::pow(20.0, u(rng));  // OCR 1–20
+  return s;
+}
+
+template <class Model>
+bool out_of_range(const Model&, const State& s) {
+  if (std::abs(mean_pressure(s.stress)) > 1e9) return true;
+  if constexpr (std::is_same_v<Model, ModifiedCamClay>) return s.pc < 1.0 || s.pc > 1e9;
+  return false;
+}
+
+/// Checks one updated state; returns a description of what is wrong, or "" when all is well.
+template <class Model>
+std::string check(const Model& model, const State& s, const StressTestOptions& options, StressTestResult& r) {
+  if (!s.stress.allFinite() || !std::isfinite(s.pc) || !std::isfinite(s.plastic_multiplier))
+    return "non-finite state";
+  const double f = model.normalized_yield(s.stress, s.pc);
+  r.max_yield = std::max(r.max_yield, f);
+  if (!(f <= options.yield_tolerance))
+    return "outside the yield surface (normalized f = " + std::to_string(f) + ")";
+  if (!(s.plastic_multiplier >= 0.0)) return "negative plastic multiplier";
+  if constexpr (std::is_same_v<Model, ModifiedCamClay>) {
+    if (!(s.pc > 0.0)) return "p_c <= 0";
+    const double ratio = mean_pressure(s.stress) / s.pc;
+    r.min_pressure_ratio = std::min(r.min_pressure_ratio, ratio);
+    if (!(ratio >= -options.yield_tolerance)) return "negative p' (p'/p_c = " + std::to_string(ratio) + ")";
+  }
+  return "";
+}
+
+template <class Model>
+void classify(const Model& model, const State& s, StressTestResult& r) {
+  if constexpr (std::is_same_v<Model, DruckerPrager>) {
+    if (s.plastic_multiplier > 0.0 && second_deviatoric_invariant(s.stress) == 0.0) ++r.at_apex;
+  } else {
+    const double p = mean_pressure(s.stress);
+    if (p < 0.01 * s.pc) ++r.near_zero_pressure;
+    if (s.plastic_multiplier > 0.0 && std::abs(deviatoric_stress(s.stress) / (model.M() * p) - 1.0) < 0.05)
+      ++r.near_critical_state;
+  }
+}
+
+void record(StressTestResult& r, long k, const std::string& what, const State& s, const Mat3& d_eps,
+            const Mat3& d_spin) {
+  r.first_problem = "increment " + std::to_string(k) + ": " + what;
+  r.problem_start = s;
+  r.problem_strain = d_eps;
+  r.problem_spin = d_spin;
+}
+
+template <class Model>
+StressTestResult walk(const Model& model, const StressTestOptions& options) {
+  StressTestResult r;
+  std::mt19937_64 rng(options.seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::uniform_int_distribution<int> segment_length(1, 50), segment_kind(0, 4);
+  const double log_min = std::log(1e-6), log_max = std::log(options.max_increment);
+  const auto t0 = std::chrono::steady_clock::now();
+
+  State state = fresh_state(model, rng);
+  Mat3 previous = direction(rng, Segment::Any), current = previous;
+  Segment kind = Segment::Any;
+  int left = 0;
+  for (long k = 0; k < options.increments; ++k) {
+    if (k > 0 && k % options.restart_every == 0) state = fresh_state(model, rng);
+    if (left == 0) {
+      left = segment_length(rng);
+      kind = static_cast<Segment>(segment_kind(rng));
+      previous = current;
+      current = kind == Segment::Reverse ? Mat3(-previous) : direction(rng, kind);
+    }
+    --left;
+    const double size = std::exp(log_min + (log_max - log_min) * u(rng));
+    const Mat3 d_eps = size * current;
+    const Mat3 d_spin = skew(rng, size);
+    ++r.increments;
+    if (d_eps.trace() > 0.0) ++r.extension;
+    if (kind == Segment::Reverse) ++r.unloading;
+    try {
+      const State next = model.update(state, d_eps, d_spin);
+      const std::string problem = check(model, next, options, r);
+      if (!problem.empty()) {
+        if (r.violations++ == 0 && r.first_problem.empty()) record(r, k, problem, state, d_eps, d_spin);
+        state = fresh_state(model, rng);
+        continue;
+      }
+      if (next.plastic_multiplier > 0.0) ++r.plastic;
+      classify(model, next, r);
+      state = out_of_range(model, next) ? fresh_state(model, rng) : next;
+    } catch (const IntegrationError& e) {
+      if (r.failures++ == 0 && r.first_problem.empty()) record(r, k, e.what(), state, d_eps, d_spin);
+      state = fresh_state(model, rng);
+    }
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+}  // namespace
+
+StressTestResult run_stress_test(const Material& material, Integrator integrator,
+                                 const StressTestOptions& options) {
+  return std::visit(
+      [&](const auto& model) -> StressTestResult {
+        using Model = std::decay_t<decltype(model)>;
+        if constexpr (std::is_same_v<Model, LinearElastic>) {
+          throw std::invalid_argument("stress test: linear elasticity has no integrator to test");
+        } else {
+          auto params = model.params();
+          params.integrator = integrator;
+          return walk(Model(params), options);
+        }
+      },
+      material);
+}
+
+std::vector<std::pair<std::string, Material>> stress_test_materials() {
+  DruckerPrager::Params dp{};  // Table 1
+  dp.density = 2000.0, dp.young_modulus = 1.0e6, dp.poisson_ratio = 0.3, dp.friction_angle = 35.0;
+  dp.cohesion = 0.0, dp.dilatancy_angle = 0.0;
+  DruckerPrager::Params dp_cohesive = dp;
+  dp_cohesive.cohesion = 5e3, dp_cohesive.dilatancy_angle = 10.0;
+  ModifiedCamClay::Params mcc{};  // Table 1
+  mcc.density = 2000.0, mcc.poisson_ratio = 0.3, mcc.friction_angle = 35.0, mcc.compression_index = 0.085;
+  mcc.swelling_index = 0.019, mcc.initial_void_ratio = 0.68,
+  mcc.elasticity = Elasticity::Kind::PressureDependent;
+  mcc.young_modulus = 1.0e6, mcc.elastic_pressure_floor = 1.0e3;
+  ModifiedCamClay::Params mcc_constant = mcc;
+  mcc_constant.elasticity = Elasticity::Kind::Constant;
+  return {{"drucker-prager (Table 1, c = 0, psi = 0)", DruckerPrager(dp)},
+          {"drucker-prager (c = 5 kPa, psi = 10 deg)", DruckerPrager(dp_cohesive)},
+          {"modified-cam-clay (Table 1, pressure-dependent K)", ModifiedCamClay(mcc)},
+          {"modified-cam-clay (Table 1, constant E)", ModifiedCamClay(mcc_constant)}};
+}
+
+}  // namespace soilsph

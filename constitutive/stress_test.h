@@ -1,0 +1,55 @@
+#pragma once
+/// @file
+/// The numerical-stability stress test: a reproducible random strain walk through one model with
+/// one integrator, checking after every increment that nothing is NaN/Inf, the stress is on or
+/// inside the yield surface within a tolerance, MCC p' ≥ 0 and p_c > 0, and Δλ ≥ 0.
+/// The walk is built from segments of 1–50 increments, each with one character: any direction,
+/// extension (through the D-P apex, MCC p' → 0), compression, pure shear (towards the critical
+/// state line), or the reverse of the previous segment (unloading). Increment sizes are log-uniform
+/// in [1e-6, max_increment]; each carries a random spin of the same order. The walk restarts from
+/// a fresh random state every `restart_every` increments, after a failure, and when the state leaves
+/// the range where it means anything (|p| > 1 GPa, or MCC p_c < 1 Pa). See docs/integrators.md.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "constitutive/material.h"
+
+namespace soilsph {
+
+struct StressTestOptions {
+  long increments = 100000;
+  std::uint64_t seed = 1;
+  double max_increment = 5e-2;    ///< largest strain-increment norm
+  double yield_tolerance = 1e-8;  ///< accepted normalized_yield() after an update
+  long restart_every = 2000;      ///< increments between fresh random starting states
+};
+
+struct StressTestResult {
+  long increments = 0;
+  long plastic = 0;                   ///< increments with Δλ > 0
+  long extension = 0;                 ///< increments with a positive (tensile) volume change
+  long unloading = 0;                 ///< increments of a reversed segment
+  long at_apex = 0;                   ///< D-P: increments ending at the apex (s = 0 and f = 0)
+  long near_zero_pressure = 0;        ///< MCC: increments ending with p' < 0.01 p_c
+  long near_critical_state = 0;       ///< MCC: plastic increments ending with |q/(M p') − 1| < 0.05
+  long failures = 0;                  ///< IntegrationError thrown (counted, then the walk restarts)
+  long violations = 0;                ///< increments that broke a check
+  double max_yield = -1e300;          ///< largest normalized yield value seen
+  double min_pressure_ratio = 1e300;  ///< MCC: smallest p'/p_c seen
+  std::string first_problem;          ///< description of the first failure or violation
+  State problem_start;                ///< the state before that increment (to reproduce it)
+  Mat3 problem_strain = Mat3::Zero(), problem_spin = Mat3::Zero();  ///< and the increment
+  double seconds = 0.0;                                             ///< wall time of the walk
+};
+
+/// Runs the walk for `material` with its integrator replaced by `integrator` (not for linear elastic).
+StressTestResult run_stress_test(const Material& material, Integrator integrator,
+                                 const StressTestOptions& options);
+
+/// The materials the stress test covers: Table 1 D-P (c = 0, ψ = 0), a cohesive dilatant D-P
+/// (c = 5 kPa, ψ = 10°), Table 1 MCC with pressure-dependent and with constant elasticity.
+std::vector<std::pair<std::string, Material>> stress_test_materials();
+
+}  // namespace soilsph

@@ -1,0 +1,193 @@
+// The `substep` and `implicit` schemes: consistent tangent against central differences, bit-for-bit
+// repeatability, the MCC normal-compression line in closed form, the exact D-P cone/apex return,
+// and the local error control of `substep`.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "constitutive/tangent.h"
+#include "helpers.h"
+
+using namespace soilsph;
+
+namespace {
+template <class Params>
+Params with(Params params, Integrator integrator, double tolerance = kDefaultSubstepTolerance) {
+  params.integrator = integrator;
+  params.substep_tolerance = tolerance;
+  return params;
+}
+
+/// Analytic consistent tangent vs central differences of the update itself.
+template <class Model>
+void check_tangent(const Model& model, const State& state, const Mat3& d_eps) {
+  const Mat6 analytic = algorithmic_tangent(model, state, d_eps);
+  const Mat6 numeric = finite_difference_tangent(model, state, d_eps);
+  INFO("analytic\n" << analytic << "\nnumeric\n" << numeric);
+  CHECK((analytic - numeric).norm() <= 1e-6 * std::max(numeric.norm(), 1.0));
+}
+
+Mat3 diagonal(double a, double b, double c) {
+  return Vec3(a, b, c).asDiagonal();
+}
+}  // namespace
+
+TEST_CASE("implicit consistent tangent matches central differences of the update", "[integrators][tangent]") {
+  SECTION("Drucker-Prager, elastic, cone (associated and non-associated) and apex") {
+    for (double psi : {0.0, 10.0}) {
+      const DruckerPrager dp(with(test::table1_drucker_prager(2e3, psi), Integrator::Implicit));
+      State s;
+      s.stress = isotropic_stress(20e3);
+      check_tangent(dp, s, diagonal(-1e-4, 0.5e-4, 0.3e-4));  // elastic
+      Mat3 shear = diagonal(-6e-2, 3e-2, 1.5e-2);
+      shear(0, 1) = shear(1, 0) = 3e-3;
+      check_tangent(dp, s, shear);  // cone
+      REQUIRE(dp.update(s, shear, Mat3::Zero()).plastic_multiplier > 0.0);
+      const Mat3 extension = diagonal(5e-2, 4e-2, 4e-2) + 1e-3 * Mat3::Ones();
+      check_tangent(dp, s, extension);  // apex: σ fixed, zero tangent
+      CHECK(algorithmic_tangent(dp, s, extension).norm() == 0.0);
+    }
+  }
+  SECTION("Modified Cam-Clay, both elasticities: elastic, hardening, softening") {
+    for (auto kind : {Elasticity::Kind::Constant, Elasticity::Kind::PressureDependent}) {
+      const ModifiedCamClay mcc(with(test::table1_cam_clay(kind), Integrator::Implicit));
+      State nc;
+      nc.stress = isotropic_stress(100e3);
+      nc.pc = 100e3;
+      Mat3 triaxial = diagonal(-1e-2, 0.2e-2, 0.2e-2);
+      triaxial(1, 2) = triaxial(2, 1) = 1e-3;
+      check_tangent(mcc, nc, triaxial);                    // wet side, hardening
+      check_tangent(mcc, nc, diagonal(1e-3, 1e-3, 1e-3));  // elastic unloading
+      State oc = nc;
+      oc.stress = isotropic_stress(30e3);
+      const Mat3 dry = diagonal(-8e-2, 4e-2, 4e-2);
+      check_tangent(mcc, oc, dry);  // dry side, softening
+      REQUIRE(mcc.update(oc, dry, Mat3::Zero()).plastic_multiplier > 0.0);
+      REQUIRE(mcc.update(oc, dry, Mat3::Zero()).pc < oc.pc);
+    }
+  }
+}
+
+TEST_CASE("the same increment applied to the same state gives the same stress bit for bit", "[integrators]") {
+  std::mt19937_64 rng(7);
+  for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
+    const DruckerPrager dp(with(test::table1_drucker_prager(1e3, 5.0), scheme));
+    const ModifiedCamClay mcc(with(test::table1_cam_clay(Elasticity::Kind::PressureDependent), scheme));
+    State s;
+    s.stress = isotropic_stress(50e3);
+    s.pc = 60e3;
+    for (int k = 0; k < 50; ++k) {
+      const Mat3 d_eps = test::random_symmetric(rng, 1e-2), d_spin = test::random_skew(rng, 1e-2);
+      const State a = dp.update(s, d_eps, d_spin), b = dp.update(s, d_eps, d_spin);
+      CHECK(a.stress == b.stress);
+      const State c = mcc.update(s, d_eps, d_spin), d = mcc.update(s, d_eps, d_spin);
+      CHECK(c.stress == d.stress);
+      CHECK(c.pc == d.pc);
+    }
+  }
+}
+
+TEST_CASE("substep and implicit follow the MCC NCL much tighter than explicit",
+          "[integrators][closed-form]") {
+  // Isotropic loading on the NCL: ε_v = λ/(1+e0) ln(p/p_i), so p = p_i exp(ε_v (1+e0)/λ), p_c = p.
+  const auto params = test::table1_cam_clay(Elasticity::Kind::PressureDependent);
+  const double lambda_star = params.compression_index / (1 + params.initial_void_ratio);
+  const double p_i = 100e3, eps_v = lambda_star * std::log(4.0);  // to p = 400 kPa
+  const int n = 10;
+  auto error = [&](Integrator scheme) {
+    const ModifiedCamClay mcc(with(params, scheme));
+    State s;
+    s.stress = isotropic_stress(p_i);
+    s.pc = p_i;
+    for (int k = 0; k < n; ++k) s = mcc.update(s, -eps_v / (3 * n) * Mat3::Identity(), Mat3::Zero());
+    return std::abs(mean_pressure(s.stress) / (4 * p_i) - 1);
+  };
+  const double e_explicit = error(Integrator::Explicit), e_substep = error(Integrator::Substep),
+               e_implicit = error(Integrator::Implicit);
+  INFO("relative error in p after " << n << " increments: explicit " << e_explicit << ", substep "
+                                    << e_substep << ", implicit " << e_implicit);
+  CHECK(e_implicit <= 1e-12);  // backward Euler with exact hardening and elasticity is exact on the NCL
+  CHECK(e_substep <= 1e-5);    // local tolerance 1e-6 per substep
+  CHECK(e_explicit > 1e-3);    // first order: the 10-increment error of the paper's scheme
+}
+
+TEST_CASE("implicit D-P return lands exactly on the cone or at the apex", "[integrators]") {
+  std::mt19937_64 rng(11);
+  for (double cohesion : {0.0, 5e3}) {
+    for (double psi : {0.0, 10.0}) {
+      const DruckerPrager dp(with(test::table1_drucker_prager(cohesion, psi), Integrator::Implicit));
+      const Mat3 apex = dp.apex_first_invariant() / 3.0 * Mat3::Identity();
+      int cone = 0, at_apex = 0;
+      for (int k = 0; k < 400; ++k) {
+        State s;
+        s.stress = isotropic_stress(20e3);
+        const Mat3 d_eps = test::random_symmetric(rng, 3e-2);
+        const State next = dp.update(s, d_eps, Mat3::Zero());
+        if (next.plastic_multiplier == 0.0) continue;
+        if (next.stress == apex) {
+          ++at_apex;
+          continue;
+        }
+        ++cone;
+        // On the cone: f = 0 to round-off of the stress scale, and the deviator keeps its direction.
+        CHECK(std::abs(dp.yield(next.stress)) <= 1e-12 * next.stress.norm());
+        const Mat3 s_trial = deviator(s.stress + dp.elasticity().at(0.0).stiffness(d_eps));
+        const Mat3 s_next = deviator(next.stress);
+        CHECK((s_next / s_next.norm() - s_trial / s_trial.norm()).norm() <= 1e-12);
+      }
+      CHECK(cone > 50);
+      if (psi == 0.0) CHECK(at_apex > 10);  // ψ = 0: every trial with I1 past the apex
+      State s;
+      s.stress = isotropic_stress(20e3);
+      CHECK(dp.update(s, 5e-2 * Mat3::Identity(), Mat3::Zero()).stress == apex);  // isotropic extension
+    }
+  }
+}
+
+TEST_CASE("substep meets its error tolerance on a large triaxial-like increment", "[integrators]") {
+  // Reference: the same path in 200 increments with a tolerance 1e-11.
+  const auto params = test::table1_cam_clay(Elasticity::Kind::PressureDependent);
+  const Mat3 path = diagonal(-5e-2, 1.5e-2, 1.5e-2);
+  auto run = [&](double tolerance, int n) {
+    const ModifiedCamClay mcc(with(params, Integrator::Substep, tolerance));
+    State s;
+    s.stress = isotropic_stress(100e3);
+    s.pc = 150e3;
+    for (int k = 0; k < n; ++k) s = mcc.update(s, path / n, Mat3::Zero());
+    return s;
+  };
+  const State reference = run(1e-11, 200);
+  for (double tolerance : {1e-4, 1e-6}) {
+    const State one = run(tolerance, 1);
+    const double error = (one.stress - reference.stress).norm() / reference.stress.norm();
+    INFO("tolerance " << tolerance << ": relative stress error " << error);
+    CHECK(error <= 20 * tolerance);
+    CHECK(std::abs(one.pc / reference.pc - 1) <= 20 * tolerance);
+  }
+}
+
+TEST_CASE("integrator and substep_tolerance keys: names, defaults and range", "[integrators][parameters]") {
+  const std::string dp =
+      "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\nyoung_modulus = 1.0e6\n"
+      "poisson_ratio = 0.3\nfriction_angle = 35.0\n";
+  const std::string mcc =
+      "[material]\nmodel = \"modified-cam-clay\"\ndensity = 2000.0\npoisson_ratio = 0.3\n"
+      "friction_angle = 35.0\ncompression_index = 0.085\nswelling_index = 0.019\n"
+      "initial_void_ratio = 0.68\n";
+  auto read = [](const std::string& text) {
+    const toml::table root = toml::parse(text);
+    return read_material(TableReader(*root["material"].as_table(), "case.toml", "material"));
+  };
+  CHECK(std::get<DruckerPrager>(read(dp)).integrator() == Integrator::Implicit);
+  CHECK(std::get<ModifiedCamClay>(read(mcc)).integrator() == Integrator::Substep);
+  CHECK(std::get<ModifiedCamClay>(read(mcc)).substep_tolerance() == kDefaultSubstepTolerance);
+  for (std::string_view name : kIntegratorNames) {
+    CHECK(integrator_name(parse_integrator(name)) == name);
+    const Material m = read(mcc + "integrator = \"" + std::string(name) + "\"\nsubstep_tolerance = 1e-8\n");
+    CHECK(integrator_name(std::get<ModifiedCamClay>(m).integrator()) == name);
+    CHECK(std::get<ModifiedCamClay>(m).substep_tolerance() == 1e-8);
+  }
+  CHECK_THROWS_WITH(read(dp + "substep_tolerance = 0.5\n"),
+                    Catch::Contains("case.toml: [material] substep_tolerance = 0.5 is out of range") &&
+                        Catch::Contains("1e-12 <= value <= 0.01"));
+  CHECK_THROWS_AS(parse_integrator("rk4"), std::invalid_argument);
+}

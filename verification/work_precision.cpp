@@ -1,0 +1,118 @@
+#include "verification/work_precision.h"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace soilsph::verification {
+
+namespace {
+double cpu_now() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// max_k |a_k − b_k| / max_k |b_k| for one column of two curves with the same rows.
+template <class Field>
+double path_error(const PointCurve& curve, const PointCurve& reference, Field field) {
+  double diff = 0.0, scale = 0.0;
+  for (std::size_t k = 0; k < reference.size() && k < curve.size(); ++k) {
+    diff = std::max(diff, std::abs(field(curve[k]) - field(reference[k])));
+    scale = std::max(scale, std::abs(field(reference[k])));
+  }
+  if (curve.size() != reference.size()) return std::numeric_limits<double>::infinity();
+  return scale > 0.0 ? diff / scale : diff;
+}
+
+/// A copy of `material` with another `substep_tolerance`.
+Material with_substep_tolerance(const Material& material, double tolerance) {
+  return std::visit(
+      [tolerance](const auto& model) -> Material {
+        using Model = std::decay_t<decltype(model)>;
+        if constexpr (requires { model.substep_tolerance(); }) {
+          typename Model::Params params = model.params();
+          params.substep_tolerance = tolerance;
+          return Model(params);
+        } else {
+          return model;
+        }
+      },
+      material);
+}
+
+struct Variant {
+  std::string integrator;
+  Material material;
+  std::string label;
+};
+
+std::vector<Variant> variants(const Material& material, const WorkPrecisionOptions& options) {
+  std::vector<Variant> out;
+  for (const std::string& integrator : options.integrators) {
+    if (integrator != "substep") {
+      out.push_back({integrator, material, integrator});
+      continue;
+    }
+    for (double tolerance : options.substep_tolerances) {
+      std::ostringstream label;
+      label << "substep(" << tolerance << ')';
+      out.push_back({integrator, with_substep_tolerance(material, tolerance), label.str()});
+    }
+  }
+  return out;
+}
+}  // namespace
+
+std::vector<WorkPrecisionRow> work_precision(const std::string& material_name, const Material& material,
+                                             PointTest test, const WorkPrecisionOptions& options,
+                                             const std::function<void(const WorkPrecisionRow&)>& on_row) {
+  std::vector<WorkPrecisionRow> rows;
+  for (int n : options.increments) {
+    test.increments = n;
+    const PointCurve reference = run_point_test(material, test, kReferenceIntegrator);
+    for (const auto& [integrator, run_material, label] : variants(material, options)) {
+      WorkPrecisionRow row{material_name, std::string(load_path_name(test.path)), label, n, 0, 0, 0, 0};
+      std::vector<double> times;
+      PointCurve curve;
+      double total = 0.0;
+      try {
+        while (times.size() < 3 || (total < options.min_seconds && times.size() < 200)) {
+          const double t0 = cpu_now();
+          curve = run_point_test(run_material, test, integrator);
+          times.push_back(cpu_now() - t0);
+          total += times.back();
+        }
+        row.error_q = path_error(curve, reference, [](const PointRecord& r) { return r.q; });
+        row.error_p = path_error(curve, reference, [](const PointRecord& r) { return r.p; });
+      } catch (const std::exception&) {  // the driver could not solve a step: no point for this count
+        row.error_q = row.error_p = std::numeric_limits<double>::infinity();
+        if (times.empty()) times.push_back(std::numeric_limits<double>::quiet_NaN());
+      }
+      std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+      row.cpu_seconds = times[times.size() / 2];
+      row.repeats = static_cast<int>(times.size());
+      rows.push_back(row);
+      if (on_row) on_row(row);
+    }
+  }
+  return rows;
+}
+
+void write_work_precision_csv(std::ostream& out, const std::vector<WorkPrecisionRow>& rows) {
+  out << "# work-precision of the stress integrators against the CVODE reference; p and q "
+         "compression-positive; "
+         "error_q = max_k |q_k - q_ref,k| / max_k |q_ref,k| over the path (same for p); cpu_seconds = median "
+         "CPU "
+         "time of one path (s)\n";
+  out << "material,path,integrator,increments,error_q,error_p,cpu_seconds,repeats\n";
+  out << std::setprecision(6);
+  for (const auto& r : rows)
+    out << r.material << ',' << r.path << ',' << r.integrator << ',' << r.increments << ',' << r.error_q
+        << ',' << r.error_p << ',' << r.cpu_seconds << ',' << r.repeats << '\n';
+}
+
+}  // namespace soilsph::verification

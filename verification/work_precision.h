@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// The work–precision benchmark of the stress integrators: for each model × load path × integrator
+/// × number of increments, the largest error in q and p' against the CVODE reference over the whole
+/// path and the CPU time of one path (median of repeats). See docs/integrators.md.
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "verification/point_test.h"
+
+namespace soilsph::verification {
+
+struct WorkPrecisionRow {
+  std::string material, path, integrator;
+  int increments;
+  double error_q;      ///< max_k |q_k − q_ref,k| / max_k |q_ref,k|
+  double error_p;      ///< the same for p'
+  double cpu_seconds;  ///< median CPU time of one path
+  int repeats;
+};
+
+struct WorkPrecisionOptions {
+  std::vector<int> increments = {1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000};
+  /// Schemes; "substep" is run once per tolerance below and labelled e.g. "substep(1e-06)".
+  std::vector<std::string> integrators = {"explicit", "substep", "implicit"};
+  std::vector<double> substep_tolerances = {1e-4, 1e-6, 1e-8};
+  double min_seconds = 0.02;  ///< repeat a path until this much CPU time (at least 3, at most 200 times)
+};
+
+/// Runs the benchmark on `test` (its `increments` is replaced by each count) for one material.
+/// `on_row` is called after each row (for progress output).
+std::vector<WorkPrecisionRow> work_precision(const std::string& material_name, const Material& material,
+                                             PointTest test, const WorkPrecisionOptions& options,
+                                             const std::function<void(const WorkPrecisionRow&)>& on_row = {});
+
+/// CSV: a '#' comment line (units, definitions), then
+/// material,path,integrator,increments,error_q,error_p,cpu_seconds,repeats.
+void write_work_precision_csv(std::ostream& out, const std::vector<WorkPrecisionRow>& rows);
+
+}  // namespace soilsph::verification
