@@ -1,0 +1,235 @@
+// FrameWriter: HDF5 1.10 C API frames and the XDMF index that points into them.
+#include "sph/output/frame_writer.h"
+
+#include <hdf5.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <type_traits>
+#include <vector>
+
+namespace soilsph::sph {
+namespace {
+
+static_assert(std::is_same_v<hid_t, int64_t> && sizeof(long long) == sizeof(hid_t),
+              "FrameWriter keeps the HDF5 file id in a long long");
+
+constexpr const char* kConventions =
+    "SI units; x horizontal, y vertical (up), z = 0 (2D plane strain); stress components sxx, syy, "
+    "szz, sxy tension-positive; p = -tr(sigma)/3 and q = sqrt(3/2 s:s) compression-positive";
+
+/// Owns one HDF5 identifier and closes it with the matching H5?close.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
+    if (id_ < 0) throw std::runtime_error("HDF5: cannot " + what);
+  }
+  ~Handle() { close_(id_); }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  operator hid_t() const { return id_; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
+}
+
+std::string frame_name(std::size_t index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%06zu", index);
+  return name;
+}
+
+/// Writes a contiguous dataset of `rows` × `columns` (columns = 1: a 1-D dataset).
+void write_dataset(hid_t group, const std::string& name, hid_t file_type, hid_t memory_type,
+                   std::size_t rows, std::size_t columns, const void* data, const std::string& where) {
+  const std::array<hsize_t, 2> dims{rows, columns};
+  const Handle space(H5Screate_simple(columns == 1 ? 1 : 2, dims.data(), nullptr), H5Sclose,
+                     "create the dataspace of " + where + name);
+  const Handle set(H5Dcreate2(group, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                   H5Dclose, "create dataset " + where + name);
+  if (rows > 0) check(H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write " + where + name);
+}
+
+void write_double(hid_t group, const std::string& name, std::span<const double> values,
+                  const std::string& where) {
+  write_dataset(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.size(), 1, values.data(), where);
+}
+
+/// Interleaves two components with z = 0 into an N×3 array (XDMF XYZ geometry and vectors).
+std::vector<double> xyz(std::span<const double> a, std::span<const double> b) {
+  std::vector<double> out(3 * a.size(), 0.0);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    out[3 * i] = a[i];
+    out[3 * i + 1] = b[i];
+  }
+  return out;
+}
+
+void write_string_attribute(hid_t object, const char* name, const std::string& value) {
+  const Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "copy the string type");
+  check(H5Tset_size(type, value.size() + 1), "size a string attribute");
+  const Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
+  const Handle attribute(H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+                         std::string("create attribute ") + name);
+  check(H5Awrite(attribute, type, value.c_str()), std::string("write attribute ") + name);
+}
+
+void write_double_attribute(hid_t object, const char* name, double value) {
+  const Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
+  const Handle attribute(H5Acreate2(object, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT),
+                         H5Aclose, std::string("create attribute ") + name);
+  check(H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value), std::string("write attribute ") + name);
+}
+
+/// Shortest text that reads back to the same double (XDMF Time values).
+std::string exact(double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+/// One scalar or vector attribute of the XDMF grid: name, XDMF type, HDF5 dataset, components.
+struct XdmfField {
+  const char* name;
+  const char* attribute_type;  ///< "Scalar" or "Vector"
+  const char* number_type;     ///< "Float" or "Int"
+  int precision;               ///< bytes
+  int components;
+};
+constexpr std::array<XdmfField, 11> kFields{{{"velocity", "Vector", "Float", 8, 3},
+                                             {"sxx", "Scalar", "Float", 8, 1},
+                                             {"syy", "Scalar", "Float", 8, 1},
+                                             {"szz", "Scalar", "Float", 8, 1},
+                                             {"sxy", "Scalar", "Float", 8, 1},
+                                             {"p", "Scalar", "Float", 8, 1},
+                                             {"q", "Scalar", "Float", 8, 1},
+                                             {"plastic_strain", "Scalar", "Float", 8, 1},
+                                             {"density", "Scalar", "Float", 8, 1},
+                                             {"layer", "Scalar", "Int", 4, 1},
+                                             {"speed", "Scalar", "Float", 8, 1}}};
+
+std::string dimensions(std::size_t particles, int components) {
+  return components == 1 ? std::to_string(particles)
+                         : std::to_string(particles) + " " + std::to_string(components);
+}
+
+}  // namespace
+
+FrameWriter::FrameWriter(const std::filesystem::path& dir)
+    : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf") {
+  std::filesystem::create_directories(dir);
+  file_ = H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw std::runtime_error("HDF5: cannot create " + h5_path_.string());
+  try {
+    write_string_attribute(file_, "conventions", kConventions);
+    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + h5_path_.string());
+    write_xdmf();
+  } catch (...) {
+    H5Fclose(file_);
+    throw;
+  }
+}
+
+FrameWriter::~FrameWriter() {
+  if (file_ >= 0) H5Fclose(file_);
+}
+
+void FrameWriter::write(const Frame& frame) {
+  const std::size_t n = frame.x.size();
+  const std::array<std::size_t, 13> sizes{frame.y.size(),   frame.vx.size(),  frame.vy.size(),
+                                          frame.sxx.size(), frame.syy.size(), frame.szz.size(),
+                                          frame.sxy.size(), frame.p.size(),   frame.q.size(),
+                                          frame.plastic_strain.size(),        frame.density.size(),
+                                          frame.layer.size(), n};
+  for (const std::size_t size : sizes) {
+    if (size != n) {
+      throw std::invalid_argument("FrameWriter: the fields of the frame at t = " + exact(frame.time) +
+                                  " have different lengths (" + std::to_string(size) + " vs " +
+                                  std::to_string(n) + " particles)");
+    }
+  }
+  const std::string name = frame_name(frames_.size());
+  const std::string where = h5_path_.string() + ":/" + name + "/";
+  {
+    const Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                       "create group " + where);
+    write_double_attribute(group, "time", frame.time);
+    const std::vector<double> position = xyz(frame.x, frame.y), velocity = xyz(frame.vx, frame.vy);
+    write_dataset(group, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, position.data(), where);
+    write_dataset(group, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, velocity.data(), where);
+    std::vector<double> speed(n);
+    for (std::size_t i = 0; i < n; ++i) speed[i] = std::hypot(frame.vx[i], frame.vy[i]);
+    write_double(group, "speed", speed, where);
+    write_double(group, "sxx", frame.sxx, where);
+    write_double(group, "syy", frame.syy, where);
+    write_double(group, "szz", frame.szz, where);
+    write_double(group, "sxy", frame.sxy, where);
+    write_double(group, "p", frame.p, where);
+    write_double(group, "q", frame.q, where);
+    write_double(group, "plastic_strain", frame.plastic_strain, where);
+    write_double(group, "density", frame.density, where);
+    write_dataset(group, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
+  }
+  // Flush before indexing the frame, so the XDMF never points at data that is not on disk.
+  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + h5_path_.string());
+  frames_.push_back({frame.time, n});
+  write_xdmf();
+}
+
+void FrameWriter::write_xdmf() const {
+  const std::string h5_name = h5_path_.filename().string();
+  std::filesystem::path temporary = xdmf_path_;
+  temporary += ".tmp";
+  {
+    std::ofstream out(temporary);
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+    out << "<?xml version=\"1.0\" ?>\n"
+        << "<!-- soilsph SPH frames (data in " << h5_name << "). " << kConventions << " -->\n"
+        << "<Xdmf Version=\"2.0\">\n  <Domain>\n"
+        << "    <Grid Name=\"soil\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (std::size_t index = 0; index < frames_.size(); ++index) {
+      const std::string name = frame_name(index);
+      const std::size_t n = frames_[index].particles;
+      const auto data_item = [&](const char* dataset, const char* number_type, int precision,
+                                 int components) {
+        out << "          <DataItem Dimensions=\"" << dimensions(n, components) << "\" NumberType=\""
+            << number_type << "\" Precision=\"" << precision << "\" Format=\"HDF\">" << h5_name << ":/"
+            << name << "/" << dataset << "</DataItem>\n";
+      };
+      out << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
+          << "        <Time Value=\"" << exact(frames_[index].time) << "\" />\n"
+          << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
+          << "\" NodesPerElement=\"1\" />\n"
+          << "        <Geometry GeometryType=\"XYZ\">\n";
+      data_item("position", "Float", 8, 3);
+      out << "        </Geometry>\n";
+      for (const XdmfField& field : kFields) {
+        out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << field.attribute_type
+            << "\" Center=\"Node\">\n";
+        data_item(field.name, field.number_type, field.precision, field.components);
+        out << "        </Attribute>\n";
+      }
+      out << "      </Grid>\n";
+    }
+    out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+    out.flush();
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  // rename() replaces the index atomically: a reader never sees a half-written file.
+  std::error_code error;
+  std::filesystem::rename(temporary, xdmf_path_, error);
+  if (error) throw std::runtime_error("cannot replace " + xdmf_path_.string() + ": " + error.message());
+}
+
+}  // namespace soilsph::sph
