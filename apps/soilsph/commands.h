@@ -7,5 +7,6 @@
 namespace soilsph::cli {
 
 void add_material_command(CLI::App& app);
+void add_collapse_command(CLI::App& app);
 
 }  // namespace soilsph::cli

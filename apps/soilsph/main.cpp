@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "soilsph 0.1.0");
   soilsph::cli::add_material_command(app);
+  soilsph::cli::add_collapse_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
