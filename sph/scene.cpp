@@ -52,6 +52,7 @@ Numerics read_numerics(const TableReader& t) {
   n.artificial_stress_epsilon = t.number_or("artificial_stress_epsilon", 0.5, Range::closed(0.0, 1.0));
   n.artificial_stress_exponent = t.number_or("artificial_stress_exponent", 2.55, Range::positive());
   n.cfl = t.number_or("cfl", 0.2, Range::closed_open(0.01, 1.0));
+  n.velocity_gradient_correction = t.boolean_or("velocity_gradient_correction", false);
   return n;
 }
 

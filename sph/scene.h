@@ -43,6 +43,7 @@ struct Numerics {
   double artificial_stress_epsilon;
   double artificial_stress_exponent;
   double cfl;                 ///< Δt = cfl · h / c
+  bool velocity_gradient_correction;  ///< kernel-gradient correction of eq 23 (default off)
 };
 
 /// [output]

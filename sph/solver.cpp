@@ -26,7 +26,7 @@ SolverSetup make_solver_setup(const Scene& scene) {
   momentum.artificial_stress = {scene.numerics.artificial_stress, scene.numerics.artificial_stress_epsilon,
                                 scene.numerics.artificial_stress_exponent, kernel.value(g.particle_spacing)};
   return {kernel, g.end_time / static_cast<double>(steps), c, steps, scene.output.frame_interval, momentum,
-          wall_guard(scene)};
+          wall_guard(scene), scene.numerics.velocity_gradient_correction};
 }
 
 }  // namespace soilsph::sph

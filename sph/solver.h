@@ -30,6 +30,7 @@ struct SolverSetup {
   double frame_interval;
   MomentumParams momentum;
   WallGuard guard;
+  bool velocity_gradient_correction = false;  ///< stages/velocity_gradient.h
 };
 
 /// Derives the kernel, the time step and the stage parameters from the scene (sph/solver.cpp).
@@ -54,7 +55,7 @@ void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspa
   compute_acceleration(p, nl, setup.momentum);  // a^n, eq 36
   kick(p, dt);                                  // v^{n+½}
   mirror_velocity_onto_boundary(p, nl);         // ghost v^{n+½}
-  compute_velocity_gradient(p, nl);             // eq 23
+  compute_velocity_gradient(p, nl, setup.velocity_gradient_correction);  // eq 23
   compute_density_rate(p, nl);                  // eq 11
   update_stress(model, p, dt);                  // σ^{n+1}: Jaumann + constitutive update
   drift(p, dt);                                 // ρ^{n+1}, x^{n+1}

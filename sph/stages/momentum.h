@@ -34,6 +34,7 @@ inline void compute_acceleration(Particles& p, const NeighbourList& nl, const Mo
     const auto i = static_cast<std::size_t>(s);
     const double inv_rho2_i = 1.0 / (p.density[i] * p.density[i]);
     const double sxx_i = p.sxx[i] * inv_rho2_i, syy_i = p.syy[i] * inv_rho2_i, sxy_i = p.sxy[i] * inv_rho2_i;
+    const bool has_tension_i = p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
     double ax = 0.0, ay = 0.0;
     for (std::size_t k = nl.begin(i); k < nl.end(i); ++k) {
       const auto j = static_cast<std::size_t>(nl.neighbour[k]);
@@ -49,7 +50,7 @@ inline void compute_acceleration(Particles& p, const NeighbourList& nl, const Mo
         txx -= pi;
         tyy -= pi;
       }
-      if (art) {
+      if (art && (has_tension_i || p.rxx[j] != 0.0 || p.ryy[j] != 0.0)) {  // R = 0 without tension
         const double f = std::pow(nl.w[k] * inv_w_dp, n_exp);
         txx += f * (p.rxx[i] + p.rxx[j]);
         tyy += f * (p.ryy[i] + p.ryy[j]);
