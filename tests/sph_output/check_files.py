@@ -56,6 +56,9 @@ def check_run(run):
         expect(times[-1] == h5[name].attrs["time"], f"{name}: XDMF time != HDF5 attribute")
         n = int(grid.find("Topology").get("NumberOfElements"))
         expect(grid.find("Topology").get("TopologyType") == "Polyvertex", f"{name}: not Polyvertex")
+        vertices = check_data_item(grid.find("Topology/DataItem"), h5, name)
+        if vertices is not None:
+            expect(np.array_equal(vertices[()], np.arange(n)), f"{name}: Polyvertex connectivity is not 0..n-1")
         expect(grid.find("Geometry").get("GeometryType") == "XYZ", f"{name}: geometry is not XYZ")
         position = check_data_item(grid.find("Geometry/DataItem"), h5, name)
         if position is not None:

@@ -31,9 +31,7 @@ struct SyntheticParticles {
       layer.push_back(static_cast<int>(i / 3));
     }
   }
-  sph::Frame frame() const {
-    return {time, x, y, vx, vy, sxx, syy, szz, sxy, p, q, eps, density, layer};
-  }
+  sph::Frame frame() const { return {time, x, y, vx, vy, sxx, syy, szz, sxy, p, q, eps, density, layer}; }
 };
 
 }  // namespace soilsph::test

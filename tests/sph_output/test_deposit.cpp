@@ -15,7 +15,9 @@ namespace {
 constexpr double kWall = 0.04;     // fixed wall x = W, as in the paper's column
 constexpr double kSpacing = 1e-3;  // particle spacing
 
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+double degrees(double radians) {
+  return radians * 180.0 / std::numbers::pi;
+}
 
 struct Particles {
   std::vector<double> x, y;
@@ -76,9 +78,9 @@ TEST_CASE("isolated splashed particles change neither runout, height nor angle",
   const auto clean = pile.measure();
 
   Particles splashed = pile;
-  splashed.add(toe - 0.05, 0.0);                    // far ahead on the floor
-  splashed.add(toe - 2.5 * kSpacing, 0.0);          // just beyond the 2-spacing link
-  splashed.add(kWall - 0.01, slope * 0.09 + 0.02);  // flying 2 cm above the surface
+  splashed.add(toe - 0.05, 0.0);                                             // far ahead on the floor
+  splashed.add(toe - 2.5 * kSpacing, 0.0);                                   // just beyond the 2-spacing link
+  splashed.add(kWall - 0.01, slope * 0.09 + 0.02);                           // flying 2 cm above the surface
   for (int k = 0; k < 5; ++k) splashed.add(toe - 0.02 - k * kSpacing, 0.0);  // a small detached group
   const auto m = splashed.measure();
   CHECK(m.runout_m == Approx(clean.runout_m).epsilon(1e-12));
@@ -125,8 +127,8 @@ TEST_CASE("a staircase lattice triangle: the angle within the discretisation bou
   }
   const auto m = pile.measure();
   const double fitted_length = (0.9 - 0.1) * 0.1;
-  const double bound = degrees(std::pow(std::cos(angle * std::numbers::pi / 180.0), 2) * 3 * kSpacing /
-                               fitted_length);
+  const double bound =
+      degrees(std::pow(std::cos(angle * std::numbers::pi / 180.0), 2) * 3 * kSpacing / fitted_length);
   CHECK(std::abs(m.repose_angle_deg - angle) < bound);
   CHECK(m.runout_m == Approx(0.1).epsilon(1e-12));
   CHECK(m.height_m <= slope * 0.1);

@@ -22,7 +22,8 @@ namespace {
 
 struct H5File {
   hid_t id;
-  explicit H5File(const std::filesystem::path& path) : id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {
+  explicit H5File(const std::filesystem::path& path)
+      : id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {
     REQUIRE(id >= 0);
   }
   ~H5File() { H5Fclose(id); }
@@ -30,7 +31,8 @@ struct H5File {
 
 /// The shape of dataset `path` and its contents converted to `memory_type`.
 template <class T>
-std::vector<T> read_dataset(hid_t file, const std::string& path, hid_t memory_type, std::vector<hsize_t>& dims) {
+std::vector<T> read_dataset(hid_t file, const std::string& path, hid_t memory_type,
+                            std::vector<hsize_t>& dims) {
   const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
   REQUIRE(set >= 0);
   const hid_t space = H5Dget_space(set);
@@ -52,7 +54,7 @@ double read_time(hid_t file, const std::string& group) {
   return time;
 }
 
-hsize_t group_count(hid_t file) {
+hsize_t link_count(hid_t file) {
   H5G_info_t info;
   REQUIRE(H5Gget_info(file, &info) >= 0);
   return info.nlinks;
@@ -66,7 +68,8 @@ std::string read_text(const std::filesystem::path& path) {
 }
 
 std::filesystem::path fresh_directory(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("soilsph_test_" + name + "_" + std::to_string(getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("soilsph_test_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   return dir;
 }
@@ -83,7 +86,7 @@ TEST_CASE("frames read back with the shapes and values written", "[frame_writer]
     CHECK(writer.frames() == 2);
   }
   const H5File file(dir / "frames.h5");
-  CHECK(group_count(file.id) == 2);
+  CHECK(link_count(file.id) == 4);  // frame_000000, frame_000001, vertices_7, vertices_12
   const SyntheticParticles* expected[] = {&a, &b};
   for (int f = 0; f < 2; ++f) {
     const SyntheticParticles& s = *expected[f];
@@ -107,20 +110,31 @@ TEST_CASE("frames read back with the shapes and values written", "[frame_writer]
       CHECK(velocity[3 * i + 2] == 0.0);
       CHECK(speed[i] == Approx(std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i])).epsilon(1e-15));
     }
-    const std::pair<const char*, const std::vector<double>*> scalars[] = {
-        {"sxx", &s.sxx}, {"syy", &s.syy}, {"szz", &s.szz},          {"sxy", &s.sxy},
-        {"p", &s.p},     {"q", &s.q},     {"plastic_strain", &s.eps}, {"density", &s.density}};
+    const std::pair<const char*, const std::vector<double>*> scalars[] = {{"sxx", &s.sxx},
+                                                                          {"syy", &s.syy},
+                                                                          {"szz", &s.szz},
+                                                                          {"sxy", &s.sxy},
+                                                                          {"p", &s.p},
+                                                                          {"q", &s.q},
+                                                                          {"plastic_strain", &s.eps},
+                                                                          {"density", &s.density}};
     for (const auto& [name, values] : scalars) {
       INFO(group << "/" << name);
       CHECK(read_dataset<double>(file.id, group + "/" + name, H5T_NATIVE_DOUBLE, dims) == *values);
       CHECK(dims == std::vector<hsize_t>{n});
     }
     CHECK(read_dataset<int>(file.id, group + "/layer", H5T_NATIVE_INT, dims) == s.layer);
+    // The Polyvertex connectivity: particle i is vertex i.
+    const auto vertices =
+        read_dataset<long long>(file.id, "/vertices_" + std::to_string(n), H5T_NATIVE_LLONG, dims);
+    CHECK(dims == std::vector<hsize_t>{n});
+    for (std::size_t i = 0; i < vertices.size(); ++i) CHECK(vertices[i] == static_cast<long long>(i));
   }
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("the XDMF index lists every frame with its time and every dataset with its size", "[frame_writer]") {
+TEST_CASE("the XDMF index lists every frame with its time and every dataset with its size",
+          "[frame_writer]") {
   const auto dir = fresh_directory("xdmf");
   const SyntheticParticles a(5, 0.0), b(9, 0.05);
   FrameWriter writer(dir);
@@ -139,7 +153,7 @@ TEST_CASE("the XDMF index lists every frame with its time and every dataset with
   CHECK(grids[1] == std::pair<std::string, double>{"frame_000001", 0.05});
 
   // Every DataItem points at an existing dataset of frames.h5 whose size matches its Dimensions.
-  const std::regex item(R"re(<DataItem Dimensions="(\d+)( 3)?"[^>]*>frames\.h5:(/frame_\d{6}/\w+)</DataItem>)re");
+  const std::regex item(R"re(<DataItem Dimensions="(\d+)( 3)?"[^>]*>frames\.h5:(/[\w/]+)</DataItem>)re");
   std::size_t items = 0;
   const H5File file(dir / "frames.h5");  // shares the writer's open file (HDF5 allows read-only reopening)
   for (auto it = std::sregex_iterator(xdmf.begin(), xdmf.end(), item); it != std::sregex_iterator(); ++it) {
@@ -154,7 +168,7 @@ TEST_CASE("the XDMF index lists every frame with its time and every dataset with
     H5Sclose(space);
     H5Dclose(set);
   }
-  CHECK(items == 2 * 12);  // geometry + 11 attributes per frame
+  CHECK(items == 2 * 13);  // topology, geometry and 11 attributes per frame
   CHECK(xdmf.find("NumberOfElements=\"5\"") != std::string::npos);
   CHECK(xdmf.find("NumberOfElements=\"9\"") != std::string::npos);
   std::filesystem::remove_all(dir);
@@ -190,7 +204,7 @@ TEST_CASE("frames written before a crash survive it", "[frame_writer]") {
   REQUIRE(waitpid(child, &status, 0) == child);
   REQUIRE(WIFEXITED(status));
   const H5File file(dir / "frames.h5");
-  CHECK(group_count(file.id) == 2);
+  CHECK(link_count(file.id) == 3);  // two frames and vertices_4
   CHECK(read_time(file.id, "/frame_000001") == 0.01);
   std::vector<hsize_t> dims;
   CHECK(read_dataset<double>(file.id, "/frame_000001/p", H5T_NATIVE_DOUBLE, dims) ==

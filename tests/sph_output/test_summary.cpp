@@ -59,12 +59,17 @@ TEST_CASE("summary.json holds every contract field and numbers read back exactly
   CHECK(value_of(json, "steps") == "123456");
   CHECK(value_of(json, "threads") == "2");
   const std::pair<const char*, double> numbers[] = {
-      {"end_time", s.end_time},         {"wall_seconds", s.wall_seconds},
+      {"end_time", s.end_time},
+      {"wall_seconds", s.wall_seconds},
       {"particle_steps_per_second", s.particle_steps_per_second},
-      {"runout_m", s.runout_m},         {"height_m", s.height_m},
-      {"repose_angle_deg", s.repose_angle_deg}, {"max_speed_end", s.max_speed_end},
-      {"kinetic_energy_end", s.kinetic_energy_end}, {"particle_spacing", s.particle_spacing},
-      {"smoothing_ratio", s.smoothing_ratio},   {"time_step", s.time_step}};
+      {"runout_m", s.runout_m},
+      {"height_m", s.height_m},
+      {"repose_angle_deg", s.repose_angle_deg},
+      {"max_speed_end", s.max_speed_end},
+      {"kinetic_energy_end", s.kinetic_energy_end},
+      {"particle_spacing", s.particle_spacing},
+      {"smoothing_ratio", s.smoothing_ratio},
+      {"time_step", s.time_step}};
   for (const auto& [key, value] : numbers) {
     INFO(key << " = " << value_of(json, key));
     CHECK(std::strtod(value_of(json, key).c_str(), nullptr) == value);
@@ -85,7 +90,8 @@ TEST_CASE("strings are JSON-escaped and non-finite numbers become null", "[summa
 }
 
 TEST_CASE("write_summary_json writes the text to the file, creating its folder", "[summary]") {
-  const auto dir = std::filesystem::temp_directory_path() / ("soilsph_test_summary_" + std::to_string(getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("soilsph_test_summary_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   const auto file = dir / "run" / "summary.json";
   write_summary_json(file, example());
