@@ -26,6 +26,8 @@ def expect(condition, message):
 
 
 def check_data_item(item, h5, where):
+    if item is None:
+        return expect(False, f"{where}: a DataItem is missing")
     file_name, _, path = item.text.strip().partition(":")
     expect(item.get("Format") == "HDF" and file_name == "frames.h5", f"{where}: DataItem {item.text!r}")
     if path not in h5:
