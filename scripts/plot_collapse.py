@@ -9,7 +9,8 @@ reads DIR/frames.h5 and DIR/summary.json (docs/sph-output.md) and writes
   DIR/deposit.png                         final deposit in horizontal layers of two alternating colours
                                           (paper Fig. 5)
   DIR/profiles.png                        with --compare: final surface profiles of DIR and DIR2 ...
-                                          (labels: summary.json's model)
+                                          (labels: summary.json's model; a triangle marks the toe
+                                          that summary.json's runout_m measures)
 Axes are in cm with equal aspect and a 2 cm x 2 cm background grid as in the paper.
 """
 import argparse
@@ -178,8 +179,13 @@ def plot_profiles(runs):
     ax.plot(x, y, color="0.5", linestyle="--", label="initial column")
     for run, final in zip(runs, finals):
         x, y = surface_profile(final, run.spacing)
-        ax.plot(x, y, linewidth=1.8, label=f"{run.label} (t = {final['time']:.2f} s)")
-    ax.set_title("final surface profiles")
+        line, = ax.plot(x, y, linewidth=1.8, label=f"{run.label} (t = {final['time']:.2f} s)")
+        runout = run.summary.get("runout_m")
+        if isinstance(runout, (int, float)):  # the toe the runout measures, from the initial right edge
+            toe = (run.frame(0)["x"].max() - runout) * CM
+            ax.plot([toe], [limits[2]], marker="^", markersize=9, color=line.get_color(), clip_on=False,
+                    zorder=4)
+    ax.set_title("final surface profiles (▲: toe of the measured runout)")
     ax.legend(loc="upper left")
     fig.savefig(first.dir / "profiles.png", bbox_inches="tight")
     plt.close(fig)
