@@ -1,9 +1,11 @@
 // Deposit metrics on synthetic particle sets whose runout, height and slope are known by construction.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "sph/analysis/deposit.h"
@@ -141,4 +143,49 @@ TEST_CASE("invalid input is rejected", "[deposit]") {
   CHECK_THROWS_AS(measure_deposit(one, two, kWall, kSpacing), std::invalid_argument);
   CHECK_THROWS_AS(measure_deposit(one, one, kWall, 0.0), std::invalid_argument);
   CHECK_THROWS_AS(measure_deposit(nan, one, kWall, kSpacing), std::invalid_argument);
+}
+
+TEST_CASE("runout and height of random clouds agree with a brute-force cluster search", "[deposit]") {
+  // Independent check of the cell-grid clustering: breadth-first search over all pairs.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> ux(-0.03, kWall), uy(0.0, 0.02);
+  const double link = soilsph::sph::deposit_link_spacings * kSpacing;
+  int compared = 0;
+  for (int cloud = 0; cloud < 40; ++cloud) {
+    const std::size_t n = 200 + 20 * cloud;  // sparse to dense: many small clusters to one
+    std::vector<double> x(n), y(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = ux(rng), y[i] = uy(rng);
+    std::vector<int> label(n, -1);
+    std::vector<std::size_t> sizes;
+    for (std::size_t seed = 0; seed < n; ++seed) {
+      if (label[seed] >= 0) continue;
+      const int id = static_cast<int>(sizes.size());
+      std::vector<std::size_t> queue{seed};
+      label[seed] = id;
+      for (std::size_t k = 0; k < queue.size(); ++k) {
+        for (std::size_t j = 0; j < n; ++j) {
+          if (label[j] < 0 && std::hypot(x[queue[k]] - x[j], y[queue[k]] - y[j]) <= link) {
+            label[j] = id;
+            queue.push_back(j);
+          }
+        }
+      }
+      sizes.push_back(queue.size());
+    }
+    const auto largest = std::max_element(sizes.begin(), sizes.end());
+    if (std::count(sizes.begin(), sizes.end(), *largest) > 1) continue;  // a tie: either is right
+    const int id = static_cast<int>(largest - sizes.begin());
+    double min_x = 1e300, max_y = -1e300;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (label[i] != id) continue;
+      min_x = std::min(min_x, x[i]);
+      max_y = std::max(max_y, y[i]);
+    }
+    const auto m = measure_deposit(x, y, kWall, kSpacing);
+    INFO("cloud " << cloud << " of " << n << " particles, largest cluster " << *largest);
+    CHECK(m.runout_m == kWall - min_x);
+    CHECK(m.height_m == max_y);
+    ++compared;
+  }
+  CHECK(compared >= 30);
 }
