@@ -84,7 +84,7 @@ def prepare_axes(ax, limits, walls):
     ax.set_xlim(limits[0], limits[1])
     ax.set_ylim(limits[2], limits[3])
     ax.set_aspect("equal")
-    for set_ticks, low, high in ((ax.set_xticks, limits[0], limits[1]), (ax.set_yticks, limits[2], limits[3])):
+    for set_ticks, low, high in ((ax.set_xticks, *limits[:2]), (ax.set_yticks, *limits[2:])):
         set_ticks(np.arange(GRID_CM * np.ceil(low / GRID_CM), high + 1e-9, GRID_CM))
     ax.grid(True, color="0.85", linewidth=0.6, zorder=0)
     ax.set_axisbelow(True)
@@ -192,7 +192,8 @@ def plot_profiles(runs):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("dir", help="run directory with frames.h5 and summary.json")
     parser.add_argument("--compare", nargs="+", default=[], metavar="DIR2",
                         help="other runs whose final surface profiles are overlaid in DIR/profiles.png")

@@ -12,8 +12,9 @@ import numpy as np
 
 ATTRIBUTES = {"velocity": 3, "speed": 1, "sxx": 1, "syy": 1, "szz": 1, "sxy": 1, "p": 1, "q": 1,
               "plastic_strain": 1, "density": 1, "layer": 1}
-SUMMARY_FIELDS = {"model": str, "integrator": str, "particles": int, "boundary_particles": int, "steps": int,
-                  "threads": int, "end_time": float, "wall_seconds": float, "particle_steps_per_second": float,
+SUMMARY_FIELDS = {"model": str, "integrator": str, "particles": int, "boundary_particles": int,
+                  "steps": int, "threads": int, "end_time": float, "wall_seconds": float,
+                  "particle_steps_per_second": float,
                   "runout_m": float, "height_m": float, "repose_angle_deg": float, "max_speed_end": float,
                   "kinetic_energy_end": float, "particle_spacing": float, "smoothing_ratio": float,
                   "time_step": float}
@@ -60,33 +61,37 @@ def check_run(run):
         expect(grid.find("Topology").get("TopologyType") == "Polyvertex", f"{name}: not Polyvertex")
         vertices = check_data_item(grid.find("Topology/DataItem"), h5, name)
         if vertices is not None:
-            expect(np.array_equal(vertices[()], np.arange(n)), f"{name}: Polyvertex connectivity is not 0..n-1")
+            expect(np.array_equal(vertices[()], np.arange(n)), f"{name}: connectivity is not 0..n-1")
         expect(grid.find("Geometry").get("GeometryType") == "XYZ", f"{name}: geometry is not XYZ")
         position = check_data_item(grid.find("Geometry/DataItem"), h5, name)
         if position is not None:
-            expect(position.shape == (n, 3) and np.all(position[:, 2] == 0), f"{name}: position not N x 3, z = 0")
+            expect(position.shape == (n, 3) and np.all(position[:, 2] == 0),
+                   f"{name}: position is not N x 3 with z = 0")
         found = {}
         for attribute in grid.findall("Attribute"):
+            where = f"{name}/{attribute.get('Name')}"
             found[attribute.get("Name")] = attribute.get("AttributeType")
-            expect(attribute.get("Center") == "Node", f"{name}/{attribute.get('Name')}: not node-centred")
+            expect(attribute.get("Center") == "Node", f"{where}: not node-centred")
             data = check_data_item(attribute.find("DataItem"), h5, name)
             if data is not None:
-                expect(data.shape[0] == n, f"{name}/{attribute.get('Name')}: {data.shape[0]} values for {n} points")
+                expect(data.shape[0] == n, f"{where}: {data.shape[0]} values for {n} points")
         for field, components in ATTRIBUTES.items():
-            expect(found.get(field) == ("Vector" if components == 3 else "Scalar"), f"{name}: attribute {field}")
+            kind = "Vector" if components == 3 else "Scalar"
+            expect(found.get(field) == kind, f"{name}: attribute {field} missing or not {kind}")
         velocity, speed = h5[name]["velocity"][()], h5[name]["speed"][()]
         expect(np.allclose(np.hypot(velocity[:, 0], velocity[:, 1]), speed, rtol=1e-14, atol=0),
                f"{name}: speed != |velocity|")
     expect(all(b > a for a, b in zip(times, times[1:])), "frame times do not increase")
-    expect("compression-positive" in h5.attrs["conventions"].decode()
-           if isinstance(h5.attrs["conventions"], bytes) else "compression-positive" in h5.attrs["conventions"],
-           "frames.h5 does not state its sign convention")
+    conventions = h5.attrs["conventions"]
+    conventions = conventions.decode() if isinstance(conventions, bytes) else conventions
+    expect("compression-positive" in conventions, "frames.h5 does not state its sign convention")
 
     summary = json.loads((run / "summary.json").read_text())
     for field, kind in SUMMARY_FIELDS.items():
         value = summary.get(field)
         ok = isinstance(value, kind) or (kind is float and isinstance(value, int))
-        expect(ok and not isinstance(value, bool), f"summary.json: {field} = {value!r} is not {kind.__name__}")
+        expect(ok and not isinstance(value, bool),
+               f"summary.json: {field} = {value!r} is not {kind.__name__}")
 
 
 for directory in sys.argv[1:]:
