@@ -83,8 +83,9 @@ std::vector<std::size_t> largest_cluster(std::span<const double> x, std::span<co
 }
 
 /// Slope angle of the surface between toe and crest (see deposit.h), degrees.
-double repose_angle(std::span<const double> x, std::span<const double> y, const std::vector<std::size_t>& cluster,
-                    double fixed_wall_x, double spacing, double height) {
+double repose_angle(std::span<const double> x, std::span<const double> y,
+                    const std::vector<std::size_t>& cluster, double fixed_wall_x, double spacing,
+                    double height) {
   // Top particle of each vertical strip of width `spacing`, strips centred on x = W − k·spacing.
   std::map<std::int64_t, std::size_t> top;  // key −k: ascending x, the toe first
   for (const std::size_t i : cluster) {
@@ -94,7 +95,7 @@ double repose_angle(std::span<const double> x, std::span<const double> y, const 
   }
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const auto& [key, i] : top) {
-    if (y[i] >= repose_band_high * height) break;  // the crest: the fit stops here
+    if (y[i] >= repose_band_high * height) break;   // the crest: the fit stops here
     if (y[i] < repose_band_low * height) continue;  // the thin toe tail
     n += 1;
     sx += x[i];

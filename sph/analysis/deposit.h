@@ -31,7 +31,7 @@ inline constexpr double repose_band_low = 0.1, repose_band_high = 0.9;
 /// x, y of the soil particles; fixed_wall_x = W; spacing = initial particle spacing (for robust
 /// measures that ignore isolated, splashed particles). Throws std::invalid_argument on empty or
 /// mismatched input or a non-positive spacing.
-DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y,
-                               double fixed_wall_x, double spacing);
+DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, double fixed_wall_x,
+                               double spacing);
 
 }  // namespace soilsph::sph

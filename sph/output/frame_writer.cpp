@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -51,14 +52,15 @@ std::string frame_name(std::size_t index) {
 }
 
 /// Writes a contiguous dataset of `rows` × `columns` (columns = 1: a 1-D dataset).
-void write_dataset(hid_t group, const std::string& name, hid_t file_type, hid_t memory_type,
-                   std::size_t rows, std::size_t columns, const void* data, const std::string& where) {
+void write_dataset(hid_t group, const std::string& name, hid_t file_type, hid_t memory_type, std::size_t rows,
+                   std::size_t columns, const void* data, const std::string& where) {
   const std::array<hsize_t, 2> dims{rows, columns};
   const Handle space(H5Screate_simple(columns == 1 ? 1 : 2, dims.data(), nullptr), H5Sclose,
                      "create the dataspace of " + where + name);
   const Handle set(H5Dcreate2(group, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                    H5Dclose, "create dataset " + where + name);
-  if (rows > 0) check(H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write " + where + name);
+  if (rows > 0)
+    check(H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write " + where + name);
 }
 
 void write_double(hid_t group, const std::string& name, std::span<const double> values,
@@ -87,8 +89,8 @@ void write_string_attribute(hid_t object, const char* name, const std::string& v
 
 void write_double_attribute(hid_t object, const char* name, double value) {
   const Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
-  const Handle attribute(H5Acreate2(object, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT),
-                         H5Aclose, std::string("create attribute ") + name);
+  const Handle attribute(H5Acreate2(object, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+                         std::string("create attribute ") + name);
   check(H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value), std::string("write attribute ") + name);
 }
 
@@ -119,6 +121,13 @@ constexpr std::array<XdmfField, 11> kFields{{{"velocity", "Vector", "Float", 8, 
                                              {"layer", "Scalar", "Int", 4, 1},
                                              {"speed", "Scalar", "Float", 8, 1}}};
 
+/// Root dataset of the vertex indices 0..n−1 that make each of n particles a Polyvertex cell: without
+/// explicit connectivity the Xdmf3 library (ParaView's Xdmf3 readers) reads a grid of points but no
+/// cells. One dataset per distinct particle count, shared by all frames with that count.
+std::string vertices_name(std::size_t particles) {
+  return "vertices_" + std::to_string(particles);
+}
+
 std::string dimensions(std::size_t particles, int components) {
   return components == 1 ? std::to_string(particles)
                          : std::to_string(particles) + " " + std::to_string(components);
@@ -147,11 +156,19 @@ FrameWriter::~FrameWriter() {
 
 void FrameWriter::write(const Frame& frame) {
   const std::size_t n = frame.x.size();
-  const std::array<std::size_t, 13> sizes{frame.y.size(),   frame.vx.size(),  frame.vy.size(),
-                                          frame.sxx.size(), frame.syy.size(), frame.szz.size(),
-                                          frame.sxy.size(), frame.p.size(),   frame.q.size(),
-                                          frame.plastic_strain.size(),        frame.density.size(),
-                                          frame.layer.size(), n};
+  const std::array<std::size_t, 13> sizes{frame.y.size(),
+                                          frame.vx.size(),
+                                          frame.vy.size(),
+                                          frame.sxx.size(),
+                                          frame.syy.size(),
+                                          frame.szz.size(),
+                                          frame.sxy.size(),
+                                          frame.p.size(),
+                                          frame.q.size(),
+                                          frame.plastic_strain.size(),
+                                          frame.density.size(),
+                                          frame.layer.size(),
+                                          n};
   for (const std::size_t size : sizes) {
     if (size != n) {
       throw std::invalid_argument("FrameWriter: the fields of the frame at t = " + exact(frame.time) +
@@ -180,6 +197,13 @@ void FrameWriter::write(const Frame& frame) {
     write_double(group, "plastic_strain", frame.plastic_strain, where);
     write_double(group, "density", frame.density, where);
     write_dataset(group, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
+  }
+  const std::string vertices = vertices_name(n);
+  if (H5Lexists(file_, vertices.c_str(), H5P_DEFAULT) <= 0) {
+    std::vector<long long> index(n);
+    std::iota(index.begin(), index.end(), 0LL);
+    write_dataset(file_, vertices, H5T_STD_I64LE, H5T_NATIVE_LLONG, n, 1, index.data(),
+                  h5_path_.string() + ":/");
   }
   // Flush before indexing the frame, so the XDMF never points at data that is not on disk.
   check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + h5_path_.string());
@@ -210,7 +234,11 @@ void FrameWriter::write_xdmf() const {
       out << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
           << "        <Time Value=\"" << exact(frames_[index].time) << "\" />\n"
           << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
-          << "\" NodesPerElement=\"1\" />\n"
+          << "\" NodesPerElement=\"1\">\n"
+          << "          <DataItem Dimensions=\"" << n
+          << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5_name << ":/" << vertices_name(n)
+          << "</DataItem>\n"
+          << "        </Topology>\n"
           << "        <Geometry GeometryType=\"XYZ\">\n";
       data_item("position", "Float", 8, 3);
       out << "        </Geometry>\n";
