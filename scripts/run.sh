@@ -9,4 +9,12 @@ mkdir -p "$out"
 for material in data/materials/dp-table1.toml data/materials/mcc-table1.toml; do
   build/apps/soilsph/soilsph material "$material"
 done
+# The collapse of the paper's column with both shipped scenes, then the pictures (Fig. 4 and 5)
+# and the D-P/MCC profile overlay. Threads: SOILSPH_THREADS (default: all cores).
+threads="${SOILSPH_THREADS:-$(nproc)}"
+for model in dp mcc; do
+  build/apps/soilsph/soilsph collapse "data/scenes/collapse-$model.toml" --out "$out/collapse-$model" --threads "$threads"
+done
+/usr/bin/python3 scripts/plot_collapse.py "$out/collapse-dp" --compare "$out/collapse-mcc"
+/usr/bin/python3 scripts/plot_collapse.py "$out/collapse-mcc"
 echo "results written to $out/"

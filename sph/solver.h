@@ -47,7 +47,7 @@ template <class Model>
 void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work) {
   const double dt = setup.time_step;
   NeighbourList& nl = work.neighbours;
-  nl.build(p.x, p.y, setup.kernel);            // neighbours at x^n
+  nl.build(p.x, p.y, setup.kernel, p.soil_count);  // neighbours at x^n
   mirror_stress_onto_boundary(p, nl);          // ghost σ^n, ρ^n from the soil
   mirror_velocity_onto_boundary(p, nl);        // ghost v^{n−½} (viscosity)
   if (setup.momentum.artificial_stress.enabled)

@@ -44,7 +44,7 @@ void run_collapse(const CollapseOptions& o) {
   std::cout << o.scene << ": " << model_name(scene.material) << ", " << particles.soil_count << " soil + "
             << particles.boundary_count() << " boundary particles, h = " << setup.kernel.smoothing_length()
             << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.time_step << " s, " << setup.steps
-            << " steps, " << o.threads << " thread(s)\n";
+            << " steps, " << o.threads << " thread(s)" << std::endl;
 
   FrameWriter writer(o.out);
   FrameBuffers buffers;
