@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -211,4 +212,36 @@ TEST_CASE("frames written before a crash survive it", "[frame_writer]") {
         SyntheticParticles(4, 0.01).p);
   CHECK(read_text(dir / "frames.xdmf").find("frame_000001/p<") != std::string::npos);
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("another process can read the frames while the writer is alive", "[frame_writer]") {
+  // A fresh process (this test program re-executed) opens frames.h5 as a viewer would: a file left
+  // open by the writer is locked by HDF5 and could not be opened.
+  const auto dir = fresh_directory("concurrent");
+  FrameWriter writer(dir);
+  writer.write(SyntheticParticles(8, 0.0).frame());
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    setenv("SOILSPH_TEST_FRAMES", writer.h5_path().c_str(), 1);
+    execl("/proc/self/exe", "test_sph_output", "[open_frames]", "--out", "/dev/null",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  writer.write(SyntheticParticles(8, 0.01).frame());  // and the writer goes on afterwards
+  CHECK(writer.frames() == 2);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("open the frames named by SOILSPH_TEST_FRAMES (run by the test above)", "[.][open_frames]") {
+  const char* path = std::getenv("SOILSPH_TEST_FRAMES");
+  REQUIRE(path != nullptr);
+  const H5File file(path);
+  std::vector<hsize_t> dims;
+  CHECK(read_dataset<double>(file.id, "/frame_000000/p", H5T_NATIVE_DOUBLE, dims) ==
+        SyntheticParticles(8, 0.0).p);
 }
