@@ -179,7 +179,8 @@ def plot_profiles(runs):
     ax.plot(x, y, color="0.5", linestyle="--", label="initial column")
     for run, final in zip(runs, finals):
         x, y = surface_profile(final, run.spacing)
-        line, = ax.plot(x, y, linewidth=1.8, label=f"{run.label} (t = {final['time']:.2f} s)")
+        label = f"{run.label}, dx = {run.spacing * 1e3:g} mm (t = {final['time']:.2f} s)"
+        line, = ax.plot(x, y, linewidth=1.8, label=label)
         runout = run.summary.get("runout_m")
         if isinstance(runout, (int, float)):  # the toe the runout measures, from the initial right edge
             toe = (run.frame(0)["x"].max() - runout) * CM
