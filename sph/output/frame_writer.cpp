@@ -49,6 +49,18 @@ void check(herr_t status, const std::string& what) {
   if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
 }
 
+/// The writer takes no HDF5 file lock (HDF5 ≥ 1.10.7): a viewer that keeps frames.h5 open (h5py,
+/// ParaView) holds a shared lock, and a locking writer could then not reopen the file for the next
+/// frame and the run would fail. The lock would only guard against a second run writing into the
+/// same folder at the same time, which is a user error either way.
+void allow_concurrent_readers(hid_t file_access) {
+#if H5_VERSION_GE(1, 10, 7)
+  check(H5Pset_file_locking(file_access, false, true), "disable HDF5 file locking");
+#else
+  (void)file_access;
+#endif
+}
+
 std::string frame_name(std::size_t index) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%06zu", index);
@@ -142,7 +154,9 @@ std::string dimensions(std::size_t particles, int components) {
 FrameWriter::FrameWriter(const std::filesystem::path& dir)
     : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf") {
   std::filesystem::create_directories(dir);
-  Handle file(H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a file-access property list");
+  allow_concurrent_readers(access);
+  Handle file(H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose,
               "create " + h5_path_.string());
   write_string_attribute(file, "conventions", kConventions);
   file.close("close " + h5_path_.string());
@@ -173,10 +187,11 @@ void FrameWriter::write(const Frame& frame) {
   }
   const std::string name = frame_name(frames_.size());
   const std::string where = h5_path_.string() + ":/" + name + "/";
-  // The file is open only while a frame is written: HDF5 locks an open file, and closing it
-  // between frames lets ParaView or h5py read the frames of a running simulation.
-  Handle file(H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose,
-              "open " + h5_path_.string() + " (is another program holding it open?)");
+  // The file is open only while a frame is written: a reader that opens it between writes finds
+  // it complete and consistent (closing writes all metadata).
+  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a file-access property list");
+  allow_concurrent_readers(access);
+  Handle file(H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, access), H5Fclose, "open " + h5_path_.string());
   {
     const Handle group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                        "create group " + where);

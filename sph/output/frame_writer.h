@@ -14,8 +14,9 @@ namespace soilsph::sph {
 /// Writes DIR/frames.h5 (one group per frame: /frame_000000/{position,velocity,sxx,...} + attribute
 /// time) and DIR/frames.xdmf (a temporal collection of Polyvertex grids ParaView opens).
 /// The HDF5 file is open only inside write(), which closes it and then atomically replaces the XDMF
-/// index: a run that crashes keeps every frame written before, and viewers (ParaView, h5py) can read
-/// the frames of a running simulation between writes (HDF5 locks a file while it is open).
+/// index, and the writer takes no HDF5 file lock: a run that crashes keeps every frame written
+/// before, viewers (ParaView, h5py) can read the frames of a running simulation, and a viewer that
+/// keeps the file open does not stop the run.
 class FrameWriter {
  public:
   /// Creates DIR if needed and truncates DIR/frames.h5 and DIR/frames.xdmf.
