@@ -36,6 +36,8 @@ class Run:
 
     def __init__(self, directory):
         self.dir = pathlib.Path(directory)
+        if not (self.dir / "frames.h5").is_file():
+            sys.exit(f"plot_collapse: {self.dir / 'frames.h5'} not found (the output folder of soilsph collapse)")
         self.h5 = h5py.File(self.dir / "frames.h5", "r")
         self.names = sorted(name for name in self.h5 if name.startswith("frame_"))
         if not self.names:
