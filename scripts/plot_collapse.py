@@ -36,6 +36,8 @@ class Run:
 
     def __init__(self, directory):
         self.dir = pathlib.Path(directory)
+        if not (self.dir / "frames.h5").is_file():
+            sys.exit(f"plot_collapse: {self.dir / 'frames.h5'} not found (the output folder of soilsph collapse)")
         self.h5 = h5py.File(self.dir / "frames.h5", "r")
         self.names = sorted(name for name in self.h5 if name.startswith("frame_"))
         if not self.names:
@@ -179,7 +181,8 @@ def plot_profiles(runs):
     ax.plot(x, y, color="0.5", linestyle="--", label="initial column")
     for run, final in zip(runs, finals):
         x, y = surface_profile(final, run.spacing)
-        line, = ax.plot(x, y, linewidth=1.8, label=f"{run.label} (t = {final['time']:.2f} s)")
+        label = f"{run.label}, dx = {run.spacing * 1e3:g} mm (t = {final['time']:.2f} s)"
+        line, = ax.plot(x, y, linewidth=1.8, label=label)
         runout = run.summary.get("runout_m")
         if isinstance(runout, (int, float)):  # the toe the runout measures, from the initial right edge
             toe = (run.frame(0)["x"].max() - runout) * CM

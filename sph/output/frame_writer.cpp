@@ -12,14 +12,10 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
-#include <type_traits>
 #include <vector>
 
 namespace soilsph::sph {
 namespace {
-
-static_assert(std::is_same_v<hid_t, int64_t> && sizeof(long long) == sizeof(hid_t),
-              "FrameWriter keeps the HDF5 file id in a long long");
 
 constexpr const char* kConventions =
     "SI units; x horizontal, y vertical (up), z = 0 (2D plane strain); stress components sxx, syy, "
@@ -31,7 +27,15 @@ class Handle {
   Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
     if (id_ < 0) throw std::runtime_error("HDF5: cannot " + what);
   }
-  ~Handle() { close_(id_); }
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  /// Closes now and reports failure (a file's close writes its metadata).
+  void close(const std::string& what) {
+    const herr_t status = close_(id_);
+    id_ = -1;
+    if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
+  }
   Handle(const Handle&) = delete;
   Handle& operator=(const Handle&) = delete;
   operator hid_t() const { return id_; }
@@ -43,6 +47,18 @@ class Handle {
 
 void check(herr_t status, const std::string& what) {
   if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
+}
+
+/// The writer takes no HDF5 file lock (HDF5 ≥ 1.10.7): a viewer that keeps frames.h5 open (h5py,
+/// ParaView) holds a shared lock, and a locking writer could then not reopen the file for the next
+/// frame and the run would fail. The lock would only guard against a second run writing into the
+/// same folder at the same time, which is a user error either way.
+void allow_concurrent_readers(hid_t file_access) {
+#if H5_VERSION_GE(1, 10, 7)
+  check(H5Pset_file_locking(file_access, false, true), "disable HDF5 file locking");
+#else
+  (void)file_access;
+#endif
 }
 
 std::string frame_name(std::size_t index) {
@@ -138,20 +154,13 @@ std::string dimensions(std::size_t particles, int components) {
 FrameWriter::FrameWriter(const std::filesystem::path& dir)
     : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf") {
   std::filesystem::create_directories(dir);
-  file_ = H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error("HDF5: cannot create " + h5_path_.string());
-  try {
-    write_string_attribute(file_, "conventions", kConventions);
-    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + h5_path_.string());
-    write_xdmf();
-  } catch (...) {
-    H5Fclose(file_);
-    throw;
-  }
-}
-
-FrameWriter::~FrameWriter() {
-  if (file_ >= 0) H5Fclose(file_);
+  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a file-access property list");
+  allow_concurrent_readers(access);
+  Handle file(H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose,
+              "create " + h5_path_.string());
+  write_string_attribute(file, "conventions", kConventions);
+  file.close("close " + h5_path_.string());
+  write_xdmf();
 }
 
 void FrameWriter::write(const Frame& frame) {
@@ -178,8 +187,13 @@ void FrameWriter::write(const Frame& frame) {
   }
   const std::string name = frame_name(frames_.size());
   const std::string where = h5_path_.string() + ":/" + name + "/";
+  // The file is open only while a frame is written: a reader that opens it between writes finds
+  // it complete and consistent (closing writes all metadata).
+  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a file-access property list");
+  allow_concurrent_readers(access);
+  Handle file(H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, access), H5Fclose, "open " + h5_path_.string());
   {
-    const Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+    const Handle group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                        "create group " + where);
     write_double_attribute(group, "time", frame.time);
     const std::vector<double> position = xyz(frame.x, frame.y), velocity = xyz(frame.vx, frame.vy);
@@ -199,14 +213,14 @@ void FrameWriter::write(const Frame& frame) {
     write_dataset(group, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
   }
   const std::string vertices = vertices_name(n);
-  if (H5Lexists(file_, vertices.c_str(), H5P_DEFAULT) <= 0) {
+  if (H5Lexists(file, vertices.c_str(), H5P_DEFAULT) <= 0) {
     std::vector<long long> index(n);
     std::iota(index.begin(), index.end(), 0LL);
-    write_dataset(file_, vertices, H5T_STD_I64LE, H5T_NATIVE_LLONG, n, 1, index.data(),
+    write_dataset(file, vertices, H5T_STD_I64LE, H5T_NATIVE_LLONG, n, 1, index.data(),
                   h5_path_.string() + ":/");
   }
-  // Flush before indexing the frame, so the XDMF never points at data that is not on disk.
-  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + h5_path_.string());
+  // Close (and so flush) before indexing the frame: the XDMF never points at data not on disk.
+  file.close("close " + h5_path_.string());
   frames_.push_back({frame.time, n});
   write_xdmf();
 }

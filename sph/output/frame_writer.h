@@ -13,13 +13,14 @@ namespace soilsph::sph {
 
 /// Writes DIR/frames.h5 (one group per frame: /frame_000000/{position,velocity,sxx,...} + attribute
 /// time) and DIR/frames.xdmf (a temporal collection of Polyvertex grids ParaView opens).
-/// Each write() flushes the HDF5 file and atomically replaces the XDMF index, so a run that crashes
-/// keeps every frame written before the crash.
+/// The HDF5 file is open only inside write(), which closes it and then atomically replaces the XDMF
+/// index, and the writer takes no HDF5 file lock: a run that crashes keeps every frame written
+/// before, viewers (ParaView, h5py) can read the frames of a running simulation, and a viewer that
+/// keeps the file open does not stop the run.
 class FrameWriter {
  public:
   /// Creates DIR if needed and truncates DIR/frames.h5 and DIR/frames.xdmf.
   explicit FrameWriter(const std::filesystem::path& dir);
-  ~FrameWriter();
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
 
@@ -42,7 +43,6 @@ class FrameWriter {
   void write_xdmf() const;
 
   std::filesystem::path h5_path_, xdmf_path_;
-  long long file_ = -1;  ///< hid_t of the open HDF5 file (kept out of the header's includes)
   std::vector<FrameEntry> frames_;
 };
 

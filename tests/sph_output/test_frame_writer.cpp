@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -211,4 +212,83 @@ TEST_CASE("frames written before a crash survive it", "[frame_writer]") {
         SyntheticParticles(4, 0.01).p);
   CHECK(read_text(dir / "frames.xdmf").find("frame_000001/p<") != std::string::npos);
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("another process can read the frames while the writer is alive", "[frame_writer]") {
+  // A fresh process (this test program re-executed) opens frames.h5 as a viewer would: a file left
+  // open by the writer is locked by HDF5 and could not be opened.
+  const auto dir = fresh_directory("concurrent");
+  FrameWriter writer(dir);
+  writer.write(SyntheticParticles(8, 0.0).frame());
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    setenv("SOILSPH_TEST_FRAMES", writer.h5_path().c_str(), 1);
+    execl("/proc/self/exe", "test_sph_output", "[open_frames]", "--out", "/dev/null",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  writer.write(SyntheticParticles(8, 0.01).frame());  // and the writer goes on afterwards
+  CHECK(writer.frames() == 2);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("open the frames named by SOILSPH_TEST_FRAMES (run by the test above)", "[.][open_frames]") {
+  const char* path = std::getenv("SOILSPH_TEST_FRAMES");
+  REQUIRE(path != nullptr);
+  const H5File file(path);
+  std::vector<hsize_t> dims;
+  CHECK(read_dataset<double>(file.id, "/frame_000000/p", H5T_NATIVE_DOUBLE, dims) ==
+        SyntheticParticles(8, 0.0).p);
+}
+
+TEST_CASE("a reader keeping the file open does not stop the writer", "[frame_writer]") {
+  // Another process opens frames.h5 read-only (taking HDF5's shared lock, as h5py or ParaView do)
+  // and keeps it open while this process writes the next frame. Two pipes order the steps.
+  const auto dir = fresh_directory("held");
+  FrameWriter writer(dir);
+  writer.write(SyntheticParticles(8, 0.0).frame());
+  int ready[2], done[2];
+  REQUIRE(pipe(ready) == 0);
+  REQUIRE(pipe(done) == 0);
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    close(ready[0]);  // keep only the ends the child uses, so a parent that stops ends the child
+    close(done[1]);
+    setenv("SOILSPH_TEST_FRAMES", writer.h5_path().c_str(), 1);
+    setenv("SOILSPH_TEST_READY_FD", std::to_string(ready[1]).c_str(), 1);
+    setenv("SOILSPH_TEST_DONE_FD", std::to_string(done[0]).c_str(), 1);
+    execl("/proc/self/exe", "test_sph_output", "[hold_frames]", "--out", "/dev/null",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(ready[1]);
+  close(done[0]);
+  char byte = 0;
+  REQUIRE(read(ready[0], &byte, 1) == 1);  // the child has the file open
+  CHECK_NOTHROW(writer.write(SyntheticParticles(8, 0.01).frame()));
+  REQUIRE(write(done[1], "x", 1) == 1);  // let the child close it and exit
+  int status = 0;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+  close(ready[0]);
+  close(done[1]);
+  const H5File file(dir / "frames.h5");
+  CHECK(link_count(file.id) == 3);  // two frames and vertices_8
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("hold the frames open until told (run by the test above)", "[.][hold_frames]") {
+  const char *path = std::getenv("SOILSPH_TEST_FRAMES"), *ready = std::getenv("SOILSPH_TEST_READY_FD"),
+             *done = std::getenv("SOILSPH_TEST_DONE_FD");
+  REQUIRE((path && ready && done));
+  const H5File file(path);
+  REQUIRE(write(std::atoi(ready), "x", 1) == 1);
+  char byte = 0;
+  REQUIRE(read(std::atoi(done), &byte, 1) == 1);
 }
