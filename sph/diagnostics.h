@@ -18,7 +18,8 @@ inline double max_speed(const Particles& p) {
 /// Kinetic energy of the soil per metre of thickness, Σ ½ m v² (J/m).
 inline double kinetic_energy(const Particles& p) {
   double e = 0.0;
-  for (std::size_t i = 0; i < p.soil_count; ++i) e += 0.5 * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+  for (std::size_t i = 0; i < p.soil_count; ++i)
+    e += 0.5 * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
   return e;
 }
 

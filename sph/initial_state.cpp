@@ -6,7 +6,9 @@
 namespace soilsph::sph {
 
 namespace {
-int lattice_count(double length, double spacing) { return static_cast<int>(std::lround(length / spacing)) + 1; }
+int lattice_count(double length, double spacing) {
+  return static_cast<int>(std::lround(length / spacing)) + 1;
+}
 
 struct Point {
   double x, y;
@@ -26,7 +28,8 @@ std::vector<Point> boundary_points(const Geometry& g) {
   for (int k = 1; k <= layers; ++k)
     for (int r = 0; r < wall_rows; ++r) {
       points.push_back({g.column_width + k * dx, r * dx, BoundaryKind::FreeSlipWall});
-      if (g.wall_withdrawal == WallWithdrawal::None) points.push_back({-k * dx, r * dx, BoundaryKind::FreeSlipWall});
+      if (g.wall_withdrawal == WallWithdrawal::None)
+        points.push_back({-k * dx, r * dx, BoundaryKind::FreeSlipWall});
     }
   return points;
 }
@@ -110,7 +113,8 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
 }
 
 double largest_initial_pressure(const Scene& scene) {
-  const Mat3 base = geostatic_stress(scene.geometry, density(scene.material), scene.initial.lateral_stress_ratio, 0.0);
+  const Mat3 base =
+      geostatic_stress(scene.geometry, density(scene.material), scene.initial.lateral_stress_ratio, 0.0);
   return mean_pressure(base);
 }
 

@@ -20,12 +20,12 @@ struct Particles {
   std::size_t soil_count = 0;  ///< soil particles are the first soil_count entries
 
   // Every particle (soil then boundary).
-  std::vector<double> x, y;                ///< position (m)
-  std::vector<double> vx, vy;              ///< velocity (m/s); at half steps for the soil (leapfrog)
-  std::vector<double> density;             ///< kg/m³
-  std::vector<double> mass;                ///< kg per metre of thickness (plane strain)
-  std::vector<double> sxx, syy, sxy;       ///< in-plane stress used by the momentum equation (Pa)
-  std::vector<double> rxx, ryy, rxy;       ///< artificial stress (Gray et al. 2001), divided by ρ² (m²/s²)
+  std::vector<double> x, y;           ///< position (m)
+  std::vector<double> vx, vy;         ///< velocity (m/s); at half steps for the soil (leapfrog)
+  std::vector<double> density;        ///< kg/m³
+  std::vector<double> mass;           ///< kg per metre of thickness (plane strain)
+  std::vector<double> sxx, syy, sxy;  ///< in-plane stress used by the momentum equation (Pa)
+  std::vector<double> rxx, ryy, rxy;  ///< artificial stress (Gray et al. 2001), divided by ρ² (m²/s²)
 
   // Soil only.
   std::vector<double> ax, ay;              ///< acceleration (m/s²)

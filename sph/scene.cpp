@@ -19,13 +19,13 @@ Geometry read_geometry(const TableReader& t) {
   Geometry g{};
   g.column_width = t.number("column_width", Range::positive(), "m");
   g.column_height = t.number("column_height", Range::positive(), "m");
-  g.particle_spacing = t.number("particle_spacing", Range::open(0.0, std::min(g.column_width, g.column_height) / 4),
-                                "m");
+  g.particle_spacing =
+      t.number("particle_spacing", Range::open(0.0, std::min(g.column_width, g.column_height) / 4), "m");
   g.smoothing_ratio = t.number("smoothing_ratio", Range::closed(1.0, 2.0));
   g.end_time = t.number("end_time", Range::positive(), "s");
   g.gravity = t.number("gravity", Range::non_negative(), "m/s^2");
   g.wall_withdrawal = t.choice("wall_withdrawal", {"instant", "none"}) == "instant" ? WallWithdrawal::Instant
-                                                                                     : WallWithdrawal::None;
+                                                                                    : WallWithdrawal::None;
   // Enough layers to fill the support 2h of a soil particle sitting on the wall.
   const auto full_support = static_cast<long long>(std::ceil(2.0 * g.smoothing_ratio - 1e-9));
   g.boundary_layers = static_cast<int>(t.integer_or("boundary_layers", full_support, full_support, 10));

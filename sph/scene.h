@@ -22,34 +22,34 @@ struct Geometry {
   double end_time;          ///< s
   double gravity;           ///< m/s², acting along −y
   WallWithdrawal wall_withdrawal;
-  int boundary_layers;      ///< layers of ghost particles behind each wall
-  double floor_length;      ///< m, the floor extends from the fixed wall to x = W − floor_length
+  int boundary_layers;  ///< layers of ghost particles behind each wall
+  double floor_length;  ///< m, the floor extends from the fixed wall to x = W − floor_length
 
   double smoothing_length() const { return smoothing_ratio * particle_spacing; }
 };
 
 /// [initial]: the geostatic state before the wall moves.
 struct InitialConditions {
-  double lateral_stress_ratio;    ///< K0 = σxx/σyy = σzz/σyy
-  double overconsolidation_ratio; ///< MCC: p_c = OCR × (p_c that puts the initial stress on the surface)
-  double preconsolidation_floor;  ///< MCC: lower bound of the initial p_c (Pa), where p → 0
+  double lateral_stress_ratio;     ///< K0 = σxx/σyy = σzz/σyy
+  double overconsolidation_ratio;  ///< MCC: p_c = OCR × (p_c that puts the initial stress on the surface)
+  double preconsolidation_floor;   ///< MCC: lower bound of the initial p_c (Pa), where p → 0
 };
 
 /// [numerics]
 struct Numerics {
-  double viscosity_alpha;     ///< α_Π, eq 37
-  double viscosity_beta;      ///< β_Π, eq 37
-  bool artificial_stress;     ///< Gray et al. 2001 on/off
+  double viscosity_alpha;  ///< α_Π, eq 37
+  double viscosity_beta;   ///< β_Π, eq 37
+  bool artificial_stress;  ///< Gray et al. 2001 on/off
   double artificial_stress_epsilon;
   double artificial_stress_exponent;
-  double cfl;                 ///< Δt = cfl · h / c
+  double cfl;                         ///< Δt = cfl · h / c
   bool velocity_gradient_correction;  ///< kernel-gradient correction of eq 23 (default off)
 };
 
 /// [output]
 struct OutputSettings {
-  double frame_interval;             ///< s between HDF5 frames
-  double layer_thickness;            ///< m, thickness of the coloured horizontal layers
+  double frame_interval;   ///< s between HDF5 frames
+  double layer_thickness;  ///< m, thickness of the coloured horizontal layers
 };
 
 struct Scene {

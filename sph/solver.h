@@ -24,9 +24,9 @@ namespace soilsph::sph {
 /// Everything fixed for a run, derived from the scene once.
 struct SolverSetup {
   CubicSpline kernel;
-  double time_step;     ///< Δt (s), CFL on the P-wave speed, shortened so that the end time is a whole step
-  double sound_speed;   ///< c (m/s)
-  std::size_t steps;    ///< steps to the end time
+  double time_step;    ///< Δt (s), CFL on the P-wave speed, shortened so that the end time is a whole step
+  double sound_speed;  ///< c (m/s)
+  std::size_t steps;   ///< steps to the end time
   double frame_interval;
   MomentumParams momentum;
   WallGuard guard;
@@ -48,17 +48,17 @@ void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspa
   const double dt = setup.time_step;
   NeighbourList& nl = work.neighbours;
   nl.build(p.x, p.y, setup.kernel, p.soil_count);  // neighbours at x^n
-  mirror_stress_onto_boundary(p, nl);          // ghost σ^n, ρ^n from the soil
-  mirror_velocity_onto_boundary(p, nl);        // ghost v^{n−½} (viscosity)
+  mirror_stress_onto_boundary(p, nl);              // ghost σ^n, ρ^n from the soil
+  mirror_velocity_onto_boundary(p, nl);            // ghost v^{n−½} (viscosity)
   if (setup.momentum.artificial_stress.enabled)
     compute_artificial_stress(p, setup.momentum.artificial_stress.epsilon);
-  compute_acceleration(p, nl, setup.momentum);  // a^n, eq 36
-  kick(p, dt);                                  // v^{n+½}
-  mirror_velocity_onto_boundary(p, nl);         // ghost v^{n+½}
+  compute_acceleration(p, nl, setup.momentum);                           // a^n, eq 36
+  kick(p, dt);                                                           // v^{n+½}
+  mirror_velocity_onto_boundary(p, nl);                                  // ghost v^{n+½}
   compute_velocity_gradient(p, nl, setup.velocity_gradient_correction);  // eq 23
-  compute_density_rate(p, nl);                  // eq 11
-  update_stress(model, p, dt);                  // σ^{n+1}: Jaumann + constitutive update
-  drift(p, dt);                                 // ρ^{n+1}, x^{n+1}
+  compute_density_rate(p, nl);                                           // eq 11
+  update_stress(model, p, dt);  // σ^{n+1}: Jaumann + constitutive update
+  drift(p, dt);                 // ρ^{n+1}, x^{n+1}
   work.guard_corrections += setup.guard.apply(p);
 }
 

@@ -50,7 +50,8 @@ void run_collapse(const CollapseOptions& o) {
   FrameBuffers buffers;
   Progress progress(scene.geometry.end_time);
   const auto on_frame = [&](const Particles& p, double t) {
-    if (!all_finite(p)) throw std::runtime_error("the solution is no longer finite at t = " + std::to_string(t) + " s");
+    if (!all_finite(p))
+      throw std::runtime_error("the solution is no longer finite at t = " + std::to_string(t) + " s");
     writer.write(buffers.view(p, t));
   };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
@@ -93,11 +94,15 @@ void run_collapse(const CollapseOptions& o) {
 void add_collapse_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("collapse", "SPH collapse of a soil column (the paper's section 5)");
   auto o = std::make_shared<CollapseOptions>();
-  cmd->add_option("SCENE", o->scene, "scene file (TOML: [scene], [initial], [material], [numerics], [output])")
+  cmd->add_option("SCENE", o->scene,
+                  "scene file (TOML: [scene], [initial], [material], [numerics], [output])")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--out", o->out, "output folder (frames.h5, frames.xdmf, summary.json)")->capture_default_str();
-  cmd->add_option("--threads", o->threads, "OpenMP threads")->check(CLI::Range(1, 1024))->capture_default_str();
+  cmd->add_option("--out", o->out, "output folder (frames.h5, frames.xdmf, summary.json)")
+      ->capture_default_str();
+  cmd->add_option("--threads", o->threads, "OpenMP threads")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
   cmd->add_option("--set", o->overrides, "override a scene value, e.g. --set scene.particle_spacing=0.002")
       ->take_all()
       ->allow_extra_args(false);

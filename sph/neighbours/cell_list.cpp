@@ -22,7 +22,8 @@ void CellList::build(std::span<const double> x, std::span<const double> y, doubl
   nx_ = static_cast<int>((*xmax - x0_) * inv_size_) + 1;
   ny_ = static_cast<int>((*ymax - y0_) * inv_size_) + 1;
   const std::size_t cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-  if (cells > 64 * n + 1024) throw std::runtime_error("neighbour search: particles spread over too large a domain");
+  if (cells > 64 * n + 1024)
+    throw std::runtime_error("neighbour search: particles spread over too large a domain");
 
   cell_start_.assign(cells + 1, 0);
   cell_of_.resize(n);

@@ -21,8 +21,8 @@ void NeighbourList::build(std::span<const double> x, std::span<const double> y, 
   }
 }
 
-std::size_t NeighbourList::fill(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel,
-                                std::size_t first_boundary) {
+std::size_t NeighbourList::fill(std::span<const double> x, std::span<const double> y,
+                                const CubicSpline& kernel, std::size_t first_boundary) {
   const double support2 = kernel.support() * kernel.support();
   const auto n = static_cast<std::ptrdiff_t>(x.size());
   std::size_t most = 0;

@@ -1,9 +1,9 @@
 #pragma once
 /// @file
 /// The momentum equation (paper eq 12 with the artificial viscosity of eq 36–38):
-///   Dv_i^α/Dt = Σ_j m_j (σ_i^{αβ}/ρ_i² + σ_j^{αβ}/ρ_j² − Π_ij δ^{αβ} + (R_i + R_j)^{αβ} f_ij^n) ∂W_ij/∂x_i^β + g^α
-///   Π_ij = (−α_Π c̄ φ_ij + β_Π φ_ij²)/ρ̄_ij  when (v_i − v_j)·(x_i − x_j) < 0, else 0,
-///   φ_ij = h (v_i − v_j)·(x_i − x_j) / (|x_i − x_j|² + (0.1h)²),
+///   Dv_i^α/Dt = Σ_j m_j (σ_i^{αβ}/ρ_i² + σ_j^{αβ}/ρ_j² − Π_ij δ^{αβ} + (R_i + R_j)^{αβ} f_ij^n) ∂W_ij/∂x_i^β
+///   + g^α Π_ij = (−α_Π c̄ φ_ij + β_Π φ_ij²)/ρ̄_ij  when (v_i − v_j)·(x_i − x_j) < 0, else 0, φ_ij = h (v_i −
+///   v_j)·(x_i − x_j) / (|x_i − x_j|² + (0.1h)²),
 /// with one smoothing length h and one sound speed c for all particles (so h_ij = h, c̄_ij = c), and
 /// R the artificial stress (stages/artificial_stress.h). Sums run over soil and boundary neighbours.
 #include <cmath>
@@ -15,11 +15,11 @@
 namespace soilsph::sph {
 
 struct MomentumParams {
-  double viscosity_alpha = 0.1;  ///< α_Π
-  double viscosity_beta = 0.1;   ///< β_Π
-  double sound_speed = 0.0;      ///< c (m/s), the elastic P-wave speed (time_step.h)
-  double smoothing_length = 0.0; ///< h (m)
-  double gravity = 9.81;         ///< m/s², acting along −y
+  double viscosity_alpha = 0.1;   ///< α_Π
+  double viscosity_beta = 0.1;    ///< β_Π
+  double sound_speed = 0.0;       ///< c (m/s), the elastic P-wave speed (time_step.h)
+  double smoothing_length = 0.0;  ///< h (m)
+  double gravity = 9.81;          ///< m/s², acting along −y
   ArtificialStress artificial_stress;
 };
 

@@ -21,7 +21,8 @@ RunResult run_scene(const Scene& scene) {
   const SolverSetup setup = make_solver_setup(scene);
   const RunStatistics stats = std::visit(
       [&](const auto& model) {
-        return run(model, setup, p, [](const Particles&, double) {}, [](double, std::size_t) {});
+        return run(
+            model, setup, p, [](const Particles&, double) {}, [](double, std::size_t) {});
       },
       scene.material);
   return {std::move(p), stats, setup};
@@ -52,13 +53,15 @@ void check_collapse(const char* name) {
     xmin = std::min(xmin, p.x[i]), xmax = std::max(xmax, p.x[i]), ymin = std::min(ymin, p.y[i]);
   CHECK(xmax <= r.setup.guard.right_wall_x);
   CHECK(ymin >= r.setup.guard.floor_y);
-  CHECK(xmin > 0.04 - 0.25);                  // still on the floor
-  CHECK(0.04 - xmin > 0.04 + 2 * 0.002);      // the column has spread beyond its width
-  CHECK(top_of_soil(p) < 0.06 - 2 * 0.002);   // and slumped
+  CHECK(xmin > 0.04 - 0.25);                 // still on the floor
+  CHECK(0.04 - xmin > 0.04 + 2 * 0.002);     // the column has spread beyond its width
+  CHECK(top_of_soil(p) < 0.06 - 2 * 0.002);  // and slumped
 }
 }  // namespace
 
-TEST_CASE("a D-P column held by both walls stays at rest for 0.2 s", "[column]") { check_column_at_rest("collapse-dp"); }
+TEST_CASE("a D-P column held by both walls stays at rest for 0.2 s", "[column]") {
+  check_column_at_rest("collapse-dp");
+}
 TEST_CASE("an MCC column held by both walls stays at rest for 0.2 s", "[column]") {
   check_column_at_rest("collapse-mcc");
 }

@@ -33,7 +33,8 @@ TEST_CASE("overrides (--set) reach any key and unknown keys are errors", "[scene
                     Contains("[numerics] cfl = 2 is out of range"));
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.wall_withdrawal=\"slow\""}),
                     Contains("wall_withdrawal") && Contains("\"instant\", \"none\""));
-  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"solver.steps=3"}), Contains("[solver] is not a known table"));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"solver.steps=3"}),
+                    Contains("[solver] is not a known table"));
 }
 
 TEST_CASE("the initial stress is geostatic and inside the yield surface", "[scene][initial]") {
@@ -56,7 +57,8 @@ TEST_CASE("the initial stress is geostatic and inside the yield surface", "[scen
   CHECK(p.state[base].pc == Approx(pb + qb * qb / (mcc.M() * mcc.M() * pb)));
 
   // A lateral stress ratio the D-P cone cannot hold (K0 = 0.3: √J2 > −α_φ I1) is rejected.
-  const Scene loose = test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.004", "initial.lateral_stress_ratio=0.3"});
+  const Scene loose = test::shipped_scene(
+      "collapse-dp", {"scene.particle_spacing=0.004", "initial.lateral_stress_ratio=0.3"});
   Particles q = build_particles(loose);
   CHECK_THROWS_WITH(set_geostatic_state(q, loose), Contains("lateral_stress_ratio"));
 }

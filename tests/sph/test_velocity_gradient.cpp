@@ -36,7 +36,8 @@ double lattice_moment(const CubicSpline& W, double dx) {
 }
 }  // namespace
 
-TEST_CASE("eq 23 gives the linear field's gradient times the lattice moment in the interior", "[velocity-gradient]") {
+TEST_CASE("eq 23 gives the linear field's gradient times the lattice moment in the interior",
+          "[velocity-gradient]") {
   const double dx = 1.0e-3;
   const CubicSpline W(1.3 * dx);
   Particles p = linear_field(15, dx);
@@ -64,7 +65,8 @@ TEST_CASE("eq 23 gives the linear field's gradient times the lattice moment in t
   CHECK(strain_rate(p, centre)(2, 2) == 0.0);
 }
 
-TEST_CASE("the corrected gradient is exact for a linear field everywhere, edges included", "[velocity-gradient]") {
+TEST_CASE("the corrected gradient is exact for a linear field everywhere, edges included",
+          "[velocity-gradient]") {
   const double dx = 2.0e-3;
   Particles p = linear_field(9, dx);
   NeighbourList nl;
