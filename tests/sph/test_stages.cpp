@@ -9,6 +9,8 @@
 #include "sph/stages/artificial_stress.h"
 #include "sph/stages/continuity.h"
 #include "sph/stages/momentum.h"
+#include "sph/stages/stress_update.h"
+#include "sph/stages/velocity_gradient.h"
 
 using namespace soilsph;
 using namespace soilsph::sph;
@@ -120,4 +122,27 @@ TEST_CASE("artificial stress: -eps sigma/rho^2 on tensile principal stresses onl
   CHECK(p.rxx[1] == 0.0);
   CHECK(p.ryy[1] == 0.0);
   CHECK(p.rxy[1] == 0.0);
+}
+
+TEST_CASE("a rigid rotation turns the stress with the body (eq 23 spin, Jaumann terms)", "[stages]") {
+  const CubicSpline W(1.3 * kDx);
+  Particles p = test::lattice(kN, kDx, kRho);
+  const double omega = 3.0, dt = 1e-3, S = 700.0;  // rad/s counter-clockwise, s, Pa
+  for (std::size_t i = 0; i < p.size(); ++i) p.vx[i] = -omega * p.y[i], p.vy[i] = omega * p.x[i];
+  for (std::size_t i = 0; i < p.soil_count; ++i) p.state[i].stress(0, 0) = -S;  // uniaxial along x
+  NeighbourList nl;
+  nl.build(p.x, p.y, W);
+  compute_velocity_gradient(p, nl);
+  const LinearElastic model({kRho, 1.0e6, 0.3});
+  update_stress(model, p, dt);
+  // Eq 23 gives the spin −ω m (ω̇_xy = ½(∂vx/∂y − ∂vy/∂x)) and no strain rate; the Hughes–Winget
+  // rotation turns by θ with tan(θ/2) = ω m dt/2, counter-clockwise like the body:
+  // σ' = −S (cos θ, sin θ) ⊗ (cos θ, sin θ).
+  const double theta = 2.0 * std::atan(0.5 * omega * lattice_moment(W) * dt);
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    if (!interior(p, i)) continue;
+    CHECK(p.sxx[i] == Approx(-S * std::cos(theta) * std::cos(theta)).epsilon(1e-9));
+    CHECK(p.syy[i] == Approx(-S * std::sin(theta) * std::sin(theta)).epsilon(1e-9));
+    CHECK(p.sxy[i] == Approx(-S * std::cos(theta) * std::sin(theta)).epsilon(1e-9));
+  }
 }
