@@ -93,3 +93,32 @@ TEST_CASE("the neighbour list finds exactly the pairs within the support", "[nei
     CHECK(nl.end(i) - nl.begin(i) == brute);
   }
 }
+
+TEST_CASE("the Verlet skin: no new search for small moves, and the pairs stay exact", "[neighbours]") {
+  const double dx = 1.0e-3;
+  const CubicSpline W(1.3 * dx);
+  Particles p = test::lattice(12, dx, 1000.0);
+  NeighbourList nl;
+  const auto matches_brute_force = [&] {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      std::size_t brute = 0;
+      for (std::size_t j = 0; j < p.size(); ++j)
+        if (j != i && std::hypot(p.x[i] - p.x[j], p.y[i] - p.y[j]) < W.support()) ++brute;
+      if (nl.end(i) - nl.begin(i) != brute) return false;
+    }
+    return true;
+  };
+  nl.build(p.x, p.y, W);
+  CHECK(nl.searches() == 1);
+  // Every particle moves by just under s/2 in alternating directions: pairs change, no new search.
+  const double small = 0.49 * NeighbourList::kSkinRatio * W.smoothing_length();
+  for (std::size_t i = 0; i < p.size(); ++i) p.x[i] += (i % 2 ? small : -small);
+  nl.build(p.x, p.y, W);
+  CHECK(nl.searches() == 1);
+  CHECK(matches_brute_force());
+  // One particle beyond s/2: a new search.
+  p.y[5] += 0.6 * NeighbourList::kSkinRatio * W.smoothing_length();
+  nl.build(p.x, p.y, W);
+  CHECK(nl.searches() == 2);
+  CHECK(matches_brute_force());
+}
