@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Leapfrog time integration (the paper's §4.1 note; Liu & Liu 2003, §4.5): velocities live at half
+/// Leapfrog time integration (the paper's §4.1 note; Liu & Liu 2003): velocities live at half
 /// steps, positions, density and stress at whole steps:
 ///   v^{n+½} = v^{n−½} + Δt a^n                       (kick, a^n from σ^n, ρ^n, x^n)
 ///   ρ^{n+1} = ρ^n + Δt Dρ/Dt,  σ^{n+1} = update(σ^n, ε̇Δt, ω̇Δt)   (rates from v^{n+½} at x^n)
