@@ -15,5 +15,6 @@ void add_bench_command(CLI::App& app);
 inline constexpr std::string_view kDefaultPointIntegrator = "substep";  // best accuracy for cost (docs/integrators.md)
 void add_point_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
+void add_collapse_command(CLI::App& app);
 
 }  // namespace soilsph::cli

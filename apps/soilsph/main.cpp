@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   soilsph::cli::add_bench_command(app);
   soilsph::cli::add_point_command(app);
   soilsph::cli::add_verify_command(app);
+  soilsph::cli::add_collapse_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,214 @@
+#!/usr/bin/python3
+"""Pictures of an SPH soil-column collapse run (Debian's /usr/bin/python3: matplotlib, h5py, numpy).
+
+    plot_collapse.py DIR [--compare DIR2 ...]
+
+reads DIR/frames.h5 and DIR/summary.json (docs/sph-output.md) and writes
+  DIR/velocity_t0.05.png ... _t0.20.png  velocity magnitude at the frame nearest each time (paper Fig. 4)
+  DIR/velocity.png                        the four snapshots together (2 x 2)
+  DIR/deposit.png                         final deposit in horizontal layers of two alternating colours
+                                          (paper Fig. 5)
+  DIR/profiles.png                        with --compare: final surface profiles of DIR and DIR2 ...
+                                          (labels: summary.json's model; a triangle marks the toe
+                                          that summary.json's runout_m measures)
+Axes are in cm with equal aspect and a 2 cm x 2 cm background grid as in the paper.
+"""
+import argparse
+import json
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+SNAPSHOT_TIMES = (0.05, 0.10, 0.15, 0.20)
+LAYER_COLOURS = ("#d9b77e", "#7a5230")  # alternating layers: light and dark sand
+GRID_CM = 2.0
+CM = 100.0  # metres -> centimetres
+
+
+class Run:
+    """One run directory: its frames (times, groups) and summary."""
+
+    def __init__(self, directory):
+        self.dir = pathlib.Path(directory)
+        if not (self.dir / "frames.h5").is_file():
+            sys.exit(f"plot_collapse: {self.dir / 'frames.h5'} not found (the output folder of soilsph collapse)")
+        self.h5 = h5py.File(self.dir / "frames.h5", "r")
+        self.names = sorted(name for name in self.h5 if name.startswith("frame_"))
+        if not self.names:
+            sys.exit(f"plot_collapse: {self.dir / 'frames.h5'} holds no frame")
+        self.times = np.array([float(self.h5[name].attrs["time"]) for name in self.names])
+        summary_file = self.dir / "summary.json"
+        self.summary = json.loads(summary_file.read_text()) if summary_file.exists() else {}
+        self.label = self.summary.get("model") or self.dir.name
+        spacing = self.summary.get("particle_spacing") or 0.0
+        self.spacing = spacing if spacing > 0 else self.estimate_spacing()
+
+    def frame(self, index):
+        """Positions (m), speed (m/s) and layer ids of frame `index`."""
+        group = self.h5[self.names[index]]
+        position = group["position"][()]
+        velocity = group["velocity"][()]
+        return {
+            "time": self.times[index],
+            "x": position[:, 0],
+            "y": position[:, 1],
+            "speed": np.hypot(velocity[:, 0], velocity[:, 1]),
+            "layer": group["layer"][()],
+        }
+
+    def nearest(self, time):
+        return int(np.argmin(np.abs(self.times - time)))
+
+    def estimate_spacing(self):
+        """Initial spacing from the first frame: the median gap between sorted distinct x."""
+        x = np.unique(np.round(self.h5[self.names[0]]["position"][:, 0], 12))
+        return float(np.median(np.diff(x))) if x.size > 1 else 1e-3
+
+
+def extent(frames, spacing):
+    """Axis limits in cm, on the 2 cm grid, that hold every particle of `frames`."""
+    x = np.concatenate([f["x"] for f in frames]) * CM
+    y = np.concatenate([f["y"] for f in frames]) * CM
+    pad = spacing * CM
+    # A thin strip under the floor rather than a whole grid cell, so the floor line shows.
+    return (GRID_CM * np.floor((x.min() - pad) / GRID_CM), GRID_CM * np.ceil((x.max() + pad) / GRID_CM),
+            y.min() - max(2 * pad, 0.5), GRID_CM * np.ceil((y.max() + pad) / GRID_CM))
+
+
+def prepare_axes(ax, limits, walls):
+    """Equal aspect, cm axes, the paper's 2 cm background grid, floor and fixed wall drawn."""
+    ax.set_xlim(limits[0], limits[1])
+    ax.set_ylim(limits[2], limits[3])
+    ax.set_aspect("equal")
+    for set_ticks, low, high in ((ax.set_xticks, *limits[:2]), (ax.set_yticks, *limits[2:])):
+        set_ticks(np.arange(GRID_CM * np.ceil(low / GRID_CM), high + 1e-9, GRID_CM))
+    ax.grid(True, color="0.85", linewidth=0.6, zorder=0)
+    ax.set_axisbelow(True)
+    ax.set_xlabel("x (cm)")
+    ax.set_ylabel("y (cm)")
+    floor_y, wall_x = walls
+    ax.axhline(floor_y, color="black", linewidth=1.5, zorder=3)
+    ax.plot([wall_x, wall_x], [floor_y, limits[3]], color="black", linewidth=2.5, zorder=3)
+
+
+def marker_area(ax, spacing):
+    """Scatter marker area (points^2) of a square one particle spacing wide at the axes' scale."""
+    ax.apply_aspect()
+    x0, _ = ax.transData.transform((0.0, 0.0))
+    x1, _ = ax.transData.transform((spacing * CM, 0.0))
+    side_points = abs(x1 - x0) * 72.0 / ax.figure.dpi
+    return max(side_points, 0.5) ** 2
+
+
+def walls(run):
+    """Floor and fixed-wall lines (cm): half a spacing beyond the initial particle centres."""
+    first = run.frame(0)
+    return ((first["y"].min() - 0.5 * run.spacing) * CM, (first["x"].max() + 0.5 * run.spacing) * CM)
+
+
+def draw_speed(ax, run, frame, limits, vmax):
+    prepare_axes(ax, limits, walls(run))
+    order = np.argsort(frame["speed"])  # fast particles on top
+    return ax.scatter(frame["x"][order] * CM, frame["y"][order] * CM, c=frame["speed"][order], cmap="turbo",
+                      vmin=0.0, vmax=vmax, marker="s", s=marker_area(ax, run.spacing), linewidths=0,
+                      zorder=2)
+
+
+def plot_velocity(run):
+    indices = [run.nearest(t) for t in SNAPSHOT_TIMES]
+    frames = [run.frame(i) for i in indices]
+    limits = extent(frames + [run.frame(0), run.frame(len(run.names) - 1)], run.spacing)
+    vmax = max(max(float(f["speed"].max()) for f in frames), 1e-12)  # one colour scale for all four
+    for requested, frame in zip(SNAPSHOT_TIMES, frames):
+        fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
+        points = draw_speed(ax, run, frame, limits, vmax)
+        ax.set_title(f"{run.label}: velocity magnitude, t = {frame['time']:.3f} s")
+        fig.colorbar(points, ax=ax, shrink=0.8, label="velocity magnitude (m/s)")
+        fig.savefig(run.dir / f"velocity_t{requested:.2f}.png", bbox_inches="tight")
+        plt.close(fig)
+    fig, axes = plt.subplots(2, 2, figsize=(13, 7.5), dpi=150, constrained_layout=True)
+    for ax, frame in zip(axes.flat, frames):
+        points = draw_speed(ax, run, frame, limits, vmax)
+        ax.set_title(f"t = {frame['time']:.3f} s")
+    fig.colorbar(points, ax=axes, shrink=0.8, label="velocity magnitude (m/s)")
+    fig.suptitle(f"{run.label}: velocity magnitude")
+    fig.savefig(run.dir / "velocity.png")
+    plt.close(fig)
+
+
+def plot_deposit(run):
+    final = run.frame(len(run.names) - 1)
+    limits = extent([run.frame(0), final], run.spacing)
+    fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
+    prepare_axes(ax, limits, walls(run))
+    colours = np.array(LAYER_COLOURS)[final["layer"] % 2]
+    ax.scatter(final["x"] * CM, final["y"] * CM, c=colours, marker="s", s=marker_area(ax, run.spacing),
+               linewidths=0, zorder=2)
+    title = f"{run.label}: deposit at t = {final['time']:.3f} s"
+    s = run.summary
+    if all(isinstance(s.get(key), (int, float)) for key in ("runout_m", "height_m", "repose_angle_deg")):
+        title += (f"\nrunout {s['runout_m'] * CM:.2f} cm, height {s['height_m'] * CM:.2f} cm, "
+                  f"repose angle {s['repose_angle_deg']:.1f}°")
+    ax.set_title(title)
+    fig.savefig(run.dir / "deposit.png", bbox_inches="tight")
+    plt.close(fig)
+
+
+def surface_profile(frame, spacing):
+    """Top particle of each vertical strip of one spacing (as in sph/analysis/deposit.cpp), in cm."""
+    strips = np.round(frame["x"] / spacing).astype(np.int64)
+    order = np.lexsort((frame["y"], strips))
+    last = np.r_[strips[order][1:] != strips[order][:-1], True]  # highest particle of each strip
+    top = order[last]
+    # Start on the floor under the leftmost strip, so a vertical face (the initial column) shows.
+    return np.r_[frame["x"][top[0]], frame["x"][top]] * CM, np.r_[frame["y"].min(), frame["y"][top]] * CM
+
+
+def plot_profiles(runs):
+    first = runs[0]
+    finals = [run.frame(len(run.names) - 1) for run in runs]
+    limits = extent(finals + [first.frame(0)], first.spacing)
+    fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
+    prepare_axes(ax, limits, walls(first))
+    initial = first.frame(0)
+    x, y = surface_profile(initial, first.spacing)
+    ax.plot(x, y, color="0.5", linestyle="--", label="initial column")
+    for run, final in zip(runs, finals):
+        x, y = surface_profile(final, run.spacing)
+        label = f"{run.label}, dx = {run.spacing * 1e3:g} mm (t = {final['time']:.2f} s)"
+        line, = ax.plot(x, y, linewidth=1.8, label=label)
+        runout = run.summary.get("runout_m")
+        if isinstance(runout, (int, float)):  # the toe the runout measures, from the initial right edge
+            toe = (run.frame(0)["x"].max() - runout) * CM
+            ax.plot([toe], [limits[2]], marker="^", markersize=9, color=line.get_color(), clip_on=False,
+                    zorder=4)
+    ax.set_title("final surface profiles (▲: toe of the measured runout)")
+    ax.legend(loc="upper left")
+    fig.savefig(first.dir / "profiles.png", bbox_inches="tight")
+    plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("dir", help="run directory with frames.h5 and summary.json")
+    parser.add_argument("--compare", nargs="+", default=[], metavar="DIR2",
+                        help="other runs whose final surface profiles are overlaid in DIR/profiles.png")
+    args = parser.parse_args()
+    run = Run(args.dir)
+    plot_velocity(run)
+    plot_deposit(run)
+    if args.compare:
+        plot_profiles([run] + [Run(d) for d in args.compare])
+    written = sorted(p.name for p in run.dir.glob("*.png"))
+    print(f"plot_collapse: wrote {', '.join(written)} in {run.dir}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,37 @@
+#pragma once
+/// @file
+/// Shape of the final deposit of a column collapse: runout, height and repose angle.
+///
+/// Geometry (the agreed scene): the fixed wall is at x = W on the right, the soil flows towards −x
+/// on the floor y = 0. Definitions (docs/sph-output.md, with the reasons):
+/// - The deposit is the largest cluster of particles linked by distances ≤ 2·spacing; isolated
+///   splashed particles or small groups farther than that from the main body are ignored.
+/// - runout_m = W − (smallest x of the deposit): the L∞ of Lube et al. (2005) measured from the
+///   fixed wall, on particle centres (with particles on the column edges it starts at L0 = W).
+/// - height_m = largest y of the deposit (particle centres; starts at H).
+/// - repose_angle_deg: the free surface is the top particle of each vertical strip of width
+///   `spacing`; the angle is atan of the least-squares slope of the surface points between the toe
+///   and the crest (the first strip reaching 90 % of height_m), keeping those higher than 10 % of
+///   height_m so that the thin toe tail and the rounded shoulder do not bias it. If that leaves
+///   fewer than two points the face is vertical and the angle is 90°.
+#include <span>
+
+namespace soilsph::sph {
+
+/// Runout, height and repose angle of a deposit (SI, degrees).
+struct DepositMetrics {
+  double runout_m, height_m, repose_angle_deg;
+};
+
+/// Link distance between particles of one deposit, in particle spacings.
+inline constexpr double deposit_link_spacings = 2.0;
+/// Height band of the surface points the repose angle is fitted on, as fractions of the height.
+inline constexpr double repose_band_low = 0.1, repose_band_high = 0.9;
+
+/// x, y of the soil particles; fixed_wall_x = W; spacing = initial particle spacing (for robust
+/// measures that ignore isolated, splashed particles). Throws std::invalid_argument on empty or
+/// mismatched input or a non-positive spacing.
+DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, double fixed_wall_x,
+                               double spacing);
+
+}  // namespace soilsph::sph

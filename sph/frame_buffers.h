@@ -1,0 +1,44 @@
+#pragma once
+/// @file
+/// Fills the derived per-particle fields a Frame shows (stress components, p, q, plastic strain)
+/// from the particles, into buffers reused from frame to frame, and returns the Frame view.
+#include <algorithm>
+#include <vector>
+
+#include "sph/output/frame.h"
+#include "sph/particles.h"
+
+namespace soilsph::sph {
+
+class FrameBuffers {
+ public:
+  /// A view of the soil particles of `p` at time t.
+  Frame view(const Particles& p, double t) {
+    const std::size_t n = p.soil_count;
+    for (auto* a : {&sxx_, &syy_, &szz_, &sxy_, &p_, &q_, &plastic_}) a->resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const State& s = p.state[i];
+      sxx_[i] = s.stress(0, 0), syy_[i] = s.stress(1, 1), szz_[i] = s.stress(2, 2), sxy_[i] = s.stress(0, 1);
+      p_[i] = mean_pressure(s.stress);
+      q_[i] = deviatoric_stress(s.stress);
+      plastic_[i] = s.plastic_shear_strain;
+    }
+    Frame f;
+    f.time = t;
+    f.x = {p.x.data(), n};
+    f.y = {p.y.data(), n};
+    f.vx = {p.vx.data(), n};
+    f.vy = {p.vy.data(), n};
+    f.sxx = sxx_, f.syy = syy_, f.szz = szz_, f.sxy = sxy_;
+    f.p = p_, f.q = q_;
+    f.plastic_strain = plastic_;
+    f.density = {p.density.data(), n};
+    f.layer = p.layer;
+    return f;
+  }
+
+ private:
+  std::vector<double> sxx_, syy_, szz_, sxy_, p_, q_, plastic_;
+};
+
+}  // namespace soilsph::sph

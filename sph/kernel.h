@@ -1,0 +1,43 @@
+#pragma once
+/// @file
+/// The cubic-spline smoothing kernel (paper eq 2–3) in 2D:
+///   W(R, h) = a_d { 2/3 − R² + R³/2   (0 ≤ R < 1);  (2 − R)³/6   (1 ≤ R < 2);  0   (R ≥ 2) },
+///   R = r/h,  a_d = 15/(7π h²),
+/// with compact support 2h. Its radial derivative, by differentiating the two branches:
+///   dW/dr = a_d/h { −2R + 3R²/2;  −(2 − R)²/2;  0 }.
+#include <numbers>
+
+namespace soilsph::sph {
+
+class CubicSpline {
+ public:
+  /// @param h smoothing length (m).
+  explicit CubicSpline(double h) : h_(h), inv_h_(1.0 / h), a_d_(15.0 / (7.0 * std::numbers::pi * h * h)) {}
+
+  double smoothing_length() const { return h_; }
+  /// Support radius 2h: W and its gradient vanish beyond it.
+  double support() const { return 2.0 * h_; }
+
+  /// W(r, h), eq 2.
+  double value(double r) const {
+    const double R = r * inv_h_;
+    if (R < 1.0) return a_d_ * (2.0 / 3.0 - R * R + 0.5 * R * R * R);
+    if (R < 2.0) return a_d_ * (2.0 - R) * (2.0 - R) * (2.0 - R) / 6.0;
+    return 0.0;
+  }
+
+  /// dW/dr; the gradient with respect to x_i is dW/dr · (x_i − x_j)/r.
+  double derivative(double r) const {
+    const double R = r * inv_h_;
+    if (R < 1.0) return a_d_ * inv_h_ * (-2.0 * R + 1.5 * R * R);
+    if (R < 2.0) return -0.5 * a_d_ * inv_h_ * (2.0 - R) * (2.0 - R);
+    return 0.0;
+  }
+
+ private:
+  double h_;
+  double inv_h_;
+  double a_d_;
+};
+
+}  // namespace soilsph::sph

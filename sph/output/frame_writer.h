@@ -1,0 +1,49 @@
+#pragma once
+/// @file
+/// Frames of an SPH run written while it runs: DIR/frames.h5 (HDF5, one group per frame) and
+/// DIR/frames.xdmf (the XDMF index ParaView opens as a time series of particle clouds).
+/// The layout is described in docs/sph-output.md.
+#include <cstddef>
+#include <filesystem>
+#include <vector>
+
+#include "sph/output/frame.h"
+
+namespace soilsph::sph {
+
+/// Writes DIR/frames.h5 (one group per frame: /frame_000000/{position,velocity,sxx,...} + attribute
+/// time) and DIR/frames.xdmf (a temporal collection of Polyvertex grids ParaView opens).
+/// The HDF5 file is open only inside write(), which closes it and then atomically replaces the XDMF
+/// index, and the writer takes no HDF5 file lock: a run that crashes keeps every frame written
+/// before, viewers (ParaView, h5py) can read the frames of a running simulation, and a viewer that
+/// keeps the file open does not stop the run.
+class FrameWriter {
+ public:
+  /// Creates DIR if needed and truncates DIR/frames.h5 and DIR/frames.xdmf.
+  explicit FrameWriter(const std::filesystem::path& dir);
+  FrameWriter(const FrameWriter&) = delete;
+  FrameWriter& operator=(const FrameWriter&) = delete;
+
+  /// Appends a frame and rewrites the XDMF index; throws std::invalid_argument if the spans
+  /// differ in length and std::runtime_error if HDF5 or the file system fails.
+  void write(const Frame& frame);
+
+  /// Number of frames written so far.
+  std::size_t frames() const { return frames_.size(); }
+  /// DIR/frames.h5.
+  const std::filesystem::path& h5_path() const { return h5_path_; }
+  /// DIR/frames.xdmf.
+  const std::filesystem::path& xdmf_path() const { return xdmf_path_; }
+
+ private:
+  struct FrameEntry {
+    double time;
+    std::size_t particles;
+  };
+  void write_xdmf() const;
+
+  std::filesystem::path h5_path_, xdmf_path_;
+  std::vector<FrameEntry> frames_;
+};
+
+}  // namespace soilsph::sph

@@ -1,0 +1,107 @@
+// summary.json written by hand: a flat object of strings and numbers needs no JSON library, only
+// correct string escaping and numbers that read back exactly.
+#include "sph/output/summary.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace soilsph::sph {
+namespace {
+
+/// A JSON string literal (RFC 8259 §7): quote, backslash and control characters escaped.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\b':
+        out += "\\b";
+        break;
+      case '\f':
+        out += "\\f";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char escape[8];
+          std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned>(c));
+          out += escape;
+        } else {
+          out += c;  // UTF-8 bytes pass through unchanged, as JSON allows
+        }
+    }
+  }
+  return out + "\"";
+}
+
+/// Shortest decimal text that reads back to the same double; JSON has no NaN or infinity: null.
+std::string number(double value) {
+  if (!std::isfinite(value)) return "null";
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+}  // namespace
+
+std::string summary_json(const Summary& s) {
+  std::string out = "{\n";
+  bool first = true;
+  const auto field = [&](const char* key, const std::string& value) {
+    out += first ? "  " : ",\n  ";
+    first = false;
+    out += quoted(key) + ": " + value;
+  };
+  field("model", quoted(s.model));
+  field("integrator", quoted(s.integrator));
+  field("particles", std::to_string(s.particles));
+  field("boundary_particles", std::to_string(s.boundary_particles));
+  field("steps", std::to_string(s.steps));
+  field("threads", std::to_string(s.threads));
+  field("end_time", number(s.end_time));
+  field("wall_seconds", number(s.wall_seconds));
+  field("particle_steps_per_second", number(s.particle_steps_per_second));
+  field("runout_m", number(s.runout_m));
+  field("height_m", number(s.height_m));
+  field("repose_angle_deg", number(s.repose_angle_deg));
+  field("max_speed_end", number(s.max_speed_end));
+  field("kinetic_energy_end", number(s.kinetic_energy_end));
+  field("particle_spacing", number(s.particle_spacing));
+  field("smoothing_ratio", number(s.smoothing_ratio));
+  field("time_step", number(s.time_step));
+  return out + "\n}\n";
+}
+
+void write_summary_json(const std::filesystem::path& file, const Summary& summary) {
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  std::filesystem::path temporary = file;
+  temporary += ".tmp";
+  {
+    std::ofstream out(temporary);
+    out << summary_json(summary);
+    out.flush();
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) throw std::runtime_error("cannot replace " + file.string() + ": " + error.message());
+}
+
+}  // namespace soilsph::sph

@@ -1,0 +1,28 @@
+#pragma once
+/// @file
+/// summary.json: the figures of one SPH run. The field names are a contract with the scripts and
+/// the README (docs/sph-output.md lists them with their units).
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+namespace soilsph::sph {
+
+/// What a run reports at its end; SI units, angles in degrees.
+struct Summary {
+  std::string model, integrator;
+  std::size_t particles = 0, boundary_particles = 0, steps = 0;
+  double end_time = 0, wall_seconds = 0, particle_steps_per_second = 0, runout_m = 0, height_m = 0,
+         repose_angle_deg = 0, max_speed_end = 0, kinetic_energy_end = 0, particle_spacing = 0,
+         smoothing_ratio = 0, time_step = 0;
+  int threads = 1;
+};
+
+/// Writes the summary as one flat JSON object (numbers in shortest round-trip form, non-finite
+/// numbers as null); the file is replaced atomically. Throws std::runtime_error on I/O failure.
+void write_summary_json(const std::filesystem::path& file, const Summary& summary);
+
+/// The JSON text write_summary_json() writes (exposed for tests and for printing).
+std::string summary_json(const Summary& summary);
+
+}  // namespace soilsph::sph

@@ -1,0 +1,103 @@
+#include "sph/scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace soilsph::sph {
+
+namespace {
+
+const toml::table& section(const toml::table& root, const std::string& source, std::string_view name) {
+  static const toml::table empty;
+  const toml::node* node = root.get(name);
+  if (!node) return empty;
+  if (!node->is_table()) throw ParameterError(source + ": [" + std::string(name) + "] must be a table");
+  return *node->as_table();
+}
+
+Geometry read_geometry(const TableReader& t) {
+  Geometry g{};
+  g.column_width = t.number("column_width", Range::positive(), "m");
+  g.column_height = t.number("column_height", Range::positive(), "m");
+  g.particle_spacing =
+      t.number("particle_spacing", Range::open(0.0, std::min(g.column_width, g.column_height) / 4), "m");
+  g.smoothing_ratio = t.number("smoothing_ratio", Range::closed(1.0, 2.0));
+  g.end_time = t.number("end_time", Range::positive(), "s");
+  g.gravity = t.number("gravity", Range::non_negative(), "m/s^2");
+  g.wall_withdrawal = t.choice("wall_withdrawal", {"instant", "none"}) == "instant" ? WallWithdrawal::Instant
+                                                                                    : WallWithdrawal::None;
+  // Enough layers to fill the support 2h of a soil particle sitting on the wall.
+  const auto full_support = static_cast<long long>(std::ceil(2.0 * g.smoothing_ratio - 1e-9));
+  g.boundary_layers = static_cast<int>(t.integer_or("boundary_layers", full_support, full_support, 10));
+  g.floor_length = t.number_or("floor_length", 6.0 * g.column_width, Range::open(g.column_width, 1e3), "m");
+  return g;
+}
+
+InitialConditions read_initial(const TableReader& t, const Material& material) {
+  // Default K0 = ν/(1−ν): the lateral stress of an elastic column under its own weight between
+  // rigid, frictionless walls (uniaxial strain), so the initial state is an elastic equilibrium.
+  const double nu = std::visit([](const auto& m) { return m.elasticity().poisson_ratio(); }, material);
+  InitialConditions c{};
+  c.lateral_stress_ratio = t.number_or("lateral_stress_ratio", nu / (1.0 - nu), Range::open(0.0, 1.0));
+  c.overconsolidation_ratio = t.number_or("overconsolidation_ratio", 1.0, Range::closed_open(1.0, 1e3));
+  c.preconsolidation_floor = t.number_or("preconsolidation_floor", 100.0, Range::positive(), "Pa");
+  return c;
+}
+
+Numerics read_numerics(const TableReader& t) {
+  Numerics n{};
+  n.viscosity_alpha = t.number_or("artificial_viscosity_alpha", 0.1, Range::non_negative());
+  n.viscosity_beta = t.number_or("artificial_viscosity_beta", 0.1, Range::non_negative());
+  n.artificial_stress = t.boolean_or("artificial_stress", true);
+  n.artificial_stress_epsilon = t.number_or("artificial_stress_epsilon", 0.5, Range::closed(0.0, 1.0));
+  n.artificial_stress_exponent = t.number_or("artificial_stress_exponent", 2.55, Range::positive());
+  n.cfl = t.number_or("cfl", 0.2, Range::closed_open(0.01, 1.0));
+  n.velocity_gradient_correction = t.boolean_or("velocity_gradient_correction", false);
+  return n;
+}
+
+/// Every frame holds all fields of sph/output/frame.h (the writer has no field selection yet).
+OutputSettings read_output(const TableReader& t, double end_time) {
+  OutputSettings o{};
+  o.frame_interval = t.number_or("frame_interval", 0.01, Range::open(0.0, end_time * (1 + 1e-9)), "s");
+  o.layer_thickness = t.number_or("layer_thickness", 0.01, Range::positive(), "m");
+  return o;
+}
+
+}  // namespace
+
+Scene read_scene(const toml::table& root, const std::string& source) {
+  for (const auto& [key, node] : root) {
+    const std::string_view name = key.str();
+    if (name != "scene" && name != "initial" && name != "material" && name != "numerics" && name != "output")
+      throw ParameterError(source + ": [" + std::string(name) +
+                           "] is not a known table (allowed: scene, initial, material, numerics, output)");
+  }
+  if (!root.get("scene")) throw ParameterError(source + ": no [scene] table");
+  if (!root.get("material")) throw ParameterError(source + ": no [material] table");
+
+  const TableReader scene(section(root, source, "scene"), source, "scene");
+  const TableReader material_table(section(root, source, "material"), source, "material");
+  const TableReader initial(section(root, source, "initial"), source, "initial");
+  const TableReader numerics(section(root, source, "numerics"), source, "numerics");
+  const TableReader output(section(root, source, "output"), source, "output");
+
+  const Geometry geometry = read_geometry(scene);
+  Material material = read_material(material_table);
+  Scene result{source,
+               geometry,
+               read_initial(initial, material),
+               read_numerics(numerics),
+               read_output(output, geometry.end_time),
+               std::move(material)};
+  for (const TableReader* t : {&scene, &initial, &numerics, &output}) t->reject_unknown_keys();
+  return result;
+}
+
+Scene load_scene(const std::string& path, std::span<const std::string> overrides) {
+  toml::table root = parse_toml_file(path);
+  for (const std::string& assignment : overrides) apply_override(root, assignment);
+  return read_scene(root, path);
+}
+
+}  // namespace soilsph::sph

@@ -1,0 +1,38 @@
+#include "sph/solver.h"
+
+#include "sph/initial_state.h"
+#include "sph/time_step.h"
+
+namespace soilsph::sph {
+
+SolverSetup make_solver_setup(const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  const CubicSpline kernel(g.smoothing_length());
+  const double rho = density(scene.material);
+  // The stiffest elastic state of the column: moduli at the largest initial pressure (constant
+  // elasticity ignores it; pressure-dependent MCC is stiffest at the base).
+  const Moduli D = std::visit(
+      [&](const auto& m) { return m.elasticity().at(largest_initial_pressure(scene)); }, scene.material);
+  const double c = p_wave_speed(D, rho);
+  const double dt_cfl = cfl_time_step(scene.numerics.cfl, kernel.smoothing_length(), c);
+  const auto steps = static_cast<std::size_t>(std::ceil(g.end_time / dt_cfl - 1e-9));
+
+  MomentumParams momentum;
+  momentum.viscosity_alpha = scene.numerics.viscosity_alpha;
+  momentum.viscosity_beta = scene.numerics.viscosity_beta;
+  momentum.sound_speed = c;
+  momentum.smoothing_length = kernel.smoothing_length();
+  momentum.gravity = g.gravity;
+  momentum.artificial_stress = {scene.numerics.artificial_stress, scene.numerics.artificial_stress_epsilon,
+                                scene.numerics.artificial_stress_exponent, kernel.value(g.particle_spacing)};
+  return {kernel,
+          g.end_time / static_cast<double>(steps),
+          c,
+          steps,
+          scene.output.frame_interval,
+          momentum,
+          wall_guard(scene),
+          scene.numerics.velocity_gradient_correction};
+}
+
+}  // namespace soilsph::sph

@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// Artificial stress against the tensile instability (Gray, Monaghan & Swift 2001, Comput. Methods
+/// Appl. Mech. Eng. 190:6641; used for soil by Bui et al. 2008, Int. J. Numer. Anal. Meth. Geomech.
+/// 32:1537). In the principal axes of the in-plane stress, a tensile principal stress σ' > 0 gets
+///   R' = −ε σ'/ρ²   (R' = 0 for σ' ≤ 0),
+/// rotated back to x–y; the momentum equation adds Σ_j m_j (R_i + R_j) f_ij^n ∇_i W_ij with
+/// f_ij = W_ij / W(Δp), Δp the initial particle spacing. Defaults ε = 0.5, n = 2.55 (Bui et al. 2008).
+/// Cohesionless soil carries almost no tension (the D-P apex is I1 = 0), so the term only acts on
+/// transient tension; it is switchable ([numerics] artificial_stress).
+#include <cmath>
+
+#include "sph/particles.h"
+
+namespace soilsph::sph {
+
+struct ArtificialStress {
+  bool enabled = true;
+  double epsilon = 0.5;       ///< ε
+  double exponent = 2.55;     ///< n
+  double w_at_spacing = 1.0;  ///< W(Δp)
+};
+
+/// Fills p.rxx, p.ryy, p.rxy (R, already divided by ρ²) for every particle, soil and boundary.
+inline void compute_artificial_stress(Particles& p, double epsilon) {
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t s = 0; s < n; ++s) {
+    const auto i = static_cast<std::size_t>(s);
+    const double sxx = p.sxx[i], syy = p.syy[i], sxy = p.sxy[i];
+    // Principal axes: tan 2θ = 2σxy / (σxx − σyy).
+    const double theta = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+    const double c = std::cos(theta), sn = std::sin(theta);
+    const double s1 = c * c * sxx + 2.0 * c * sn * sxy + sn * sn * syy;
+    const double s2 = sn * sn * sxx - 2.0 * c * sn * sxy + c * c * syy;
+    const double scale = -epsilon / (p.density[i] * p.density[i]);
+    const double r1 = s1 > 0.0 ? scale * s1 : 0.0;
+    const double r2 = s2 > 0.0 ? scale * s2 : 0.0;
+    p.rxx[i] = c * c * r1 + sn * sn * r2;
+    p.ryy[i] = sn * sn * r1 + c * c * r2;
+    p.rxy[i] = c * sn * (r1 - r2);
+  }
+}
+
+}  // namespace soilsph::sph

@@ -1,0 +1,58 @@
+// The cubic-spline kernel (eq 2-3): normalisation, derivative, and its lattice sums for h/dx = 1.3.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "sph/kernel.h"
+
+using namespace soilsph::sph;
+
+TEST_CASE("the cubic spline integrates to one over the plane", "[kernel]") {
+  // ∫ W dA = ∫_0^{2h} W(r) 2πr dr, by the composite Simpson rule (exact for the piecewise cubic
+  // times r on each branch when the knot r = h is a node).
+  const double h = 1.7e-3;
+  const CubicSpline W(h);
+  const int n = 2000;  // intervals on [0, 2h], even, with r = h a node
+  const double dr = 2.0 * h / n;
+  double integral = 0.0;
+  for (int k = 0; k <= n; ++k) {
+    const double r = k * dr;
+    const double weight = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+    integral += weight * W.value(r) * 2.0 * std::numbers::pi * r;
+  }
+  integral *= dr / 3.0;
+  CHECK(integral == Approx(1.0).epsilon(1e-10));
+  CHECK(W.value(2.0 * h) == 0.0);
+  CHECK(W.value(3.0 * h) == 0.0);
+  CHECK(W.value(0.0) == Approx(15.0 / (7.0 * std::numbers::pi * h * h) * 2.0 / 3.0));
+}
+
+TEST_CASE("the kernel derivative matches central differences", "[kernel]") {
+  const double h = 1.0e-3;
+  const CubicSpline W(h);
+  for (const double R : {0.1, 0.5, 0.9, 1.2, 1.5, 1.9}) {
+    const double r = R * h, e = 1e-7 * h;
+    const double numeric = (W.value(r + e) - W.value(r - e)) / (2.0 * e);
+    CHECK(W.derivative(r) == Approx(numeric).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("on a lattice the kernel sums to one and its gradient to zero", "[kernel]") {
+  // Σ_j V_j W_ij and Σ_j V_j ∇W_ij at a particle with a full neighbourhood, V = dx².
+  const double dx = 1.0e-3;
+  for (const double ratio : {1.2, 1.3, 1.5}) {
+    const CubicSpline W(ratio * dx);
+    double sum = 0.0, gx = 0.0, gy = 0.0;
+    for (int a = -4; a <= 4; ++a)
+      for (int b = -4; b <= 4; ++b) {
+        const double rx = -a * dx, ry = -b * dx, r = std::hypot(rx, ry);  // x_i − x_j, i at the origin
+        sum += dx * dx * W.value(r);
+        if (r > 0.0) gx += dx * dx * W.derivative(r) * rx / r, gy += dx * dx * W.derivative(r) * ry / r;
+      }
+    INFO("h/dx = " << ratio);
+    CHECK(sum == Approx(1.0).epsilon(5e-3));  // quadrature error of the lattice sum
+    CHECK(std::abs(gx) < 1e-9 / dx);          // zero by symmetry, to round-off (scale 1/dx)
+    CHECK(std::abs(gy) < 1e-9 / dx);
+  }
+}

@@ -1,0 +1,77 @@
+// Scene input: the shipped scenes, overrides, validation messages, the initial geostatic state.
+#include <catch2/catch.hpp>
+
+#include "helpers.h"
+#include "sph/solver.h"
+
+using namespace soilsph;
+using namespace soilsph::sph;
+using Catch::Matchers::Contains;
+
+TEST_CASE("the shipped scenes hold the paper's column: 41 x 61 = 2501 particles at 1 mm", "[scene]") {
+  for (const char* name : {"collapse-dp", "collapse-mcc"}) {
+    const Scene scene = test::shipped_scene(name);
+    const Particles p = build_particles(scene);
+    CHECK(p.soil_count == 2501);
+    CHECK(scene.geometry.column_width == 0.04);
+    CHECK(scene.geometry.column_height == 0.06);
+    CHECK(scene.geometry.wall_withdrawal == WallWithdrawal::Instant);
+    CHECK(density(scene.material) == 2000.0);
+  }
+  CHECK(model_name(test::shipped_scene("collapse-dp").material) == "drucker-prager");
+  CHECK(model_name(test::shipped_scene("collapse-mcc").material) == "modified-cam-clay");
+}
+
+TEST_CASE("overrides (--set) reach any key and unknown keys are errors", "[scene]") {
+  const Scene s = test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.002", "numerics.cfl=0.1"});
+  CHECK(s.geometry.particle_spacing == 0.002);
+  CHECK(s.numerics.cfl == 0.1);
+  CHECK(build_particles(s).soil_count == 21 * 31);
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.particle_spacin=0.002"}),
+                    Contains("[scene] particle_spacin") && Contains("is not a known key"));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"numerics.cfl=2"}),
+                    Contains("[numerics] cfl = 2 is out of range"));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.wall_withdrawal=\"slow\""}),
+                    Contains("wall_withdrawal") && Contains("\"instant\", \"none\""));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"solver.steps=3"}),
+                    Contains("[solver] is not a known table"));
+}
+
+TEST_CASE("the initial stress is geostatic and inside the yield surface", "[scene][initial]") {
+  const Scene scene = test::shipped_scene("collapse-mcc", {"scene.particle_spacing=0.002"});
+  Particles p = build_particles(scene);
+  set_geostatic_state(p, scene);
+  const auto& mcc = std::get<ModifiedCamClay>(scene.material);
+  const double rho = 2000.0, g = 9.81, H = 0.06, dx = 0.002, k0 = 0.3 / 0.7;
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    const double sv = rho * g * (H + dx / 2 - p.y[i]);
+    CHECK(p.state[i].stress(1, 1) == Approx(-sv));
+    CHECK(p.state[i].stress(0, 0) == Approx(-k0 * sv));
+    CHECK(p.state[i].stress(2, 2) == Approx(-k0 * sv));
+    CHECK(mcc.yield(p.state[i].stress, p.state[i].pc) <= 1e-9 * p.state[i].pc * p.state[i].pc);
+    // OCR = 1: on the surface where the floor does not act; the floor bounds p_c at the top.
+    CHECK(p.state[i].pc >= 100.0);
+  }
+  const std::size_t base = 0;  // y = 0, p_c from eq 24 with f = 0
+  const double pb = (1 + 2 * k0) / 3 * rho * g * (H + dx / 2), qb = (1 - k0) * rho * g * (H + dx / 2);
+  CHECK(p.state[base].pc == Approx(pb + qb * qb / (mcc.M() * mcc.M() * pb)));
+
+  // A lateral stress ratio the D-P cone cannot hold (K0 = 0.3: √J2 > −α_φ I1) is rejected.
+  const Scene loose = test::shipped_scene(
+      "collapse-dp", {"scene.particle_spacing=0.004", "initial.lateral_stress_ratio=0.3"});
+  Particles q = build_particles(loose);
+  CHECK_THROWS_WITH(set_geostatic_state(q, loose), Contains("lateral_stress_ratio"));
+}
+
+TEST_CASE("the time step is the CFL step on the elastic P-wave speed", "[scene][time-step]") {
+  const Scene scene = test::shipped_scene("collapse-dp");
+  const SolverSetup setup = make_solver_setup(scene);
+  // Table 1: K = E/(3(1−2ν)), G = E/(2(1+ν)), c = √((K + 4G/3)/ρ) = √(E(1−ν)/((1+ν)(1−2ν)ρ)).
+  const double c = std::sqrt(1.0e6 * 0.7 / (1.3 * 0.4 * 2000.0));
+  CHECK(setup.sound_speed == Approx(c));
+  CHECK(setup.sound_speed == Approx(25.94).epsilon(1e-3));
+  const double dt = 0.2 * 1.3e-3 / c;
+  CHECK(setup.time_step <= dt);
+  CHECK(setup.time_step == Approx(dt).epsilon(1e-4));  // shortened only to end on a whole step
+  CHECK(setup.time_step * static_cast<double>(setup.steps) == Approx(scene.geometry.end_time));
+}

@@ -1,0 +1,148 @@
+// The SPH stages on fields with known answers: continuity (eq 11), momentum (eq 12, 36-38) and the
+// artificial stress (Gray et al. 2001), in the interior of a lattice.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "helpers.h"
+#include "sph/neighbours/neighbour_list.h"
+#include "sph/stages/artificial_stress.h"
+#include "sph/stages/continuity.h"
+#include "sph/stages/momentum.h"
+#include "sph/stages/stress_update.h"
+#include "sph/stages/velocity_gradient.h"
+
+using namespace soilsph;
+using namespace soilsph::sph;
+
+namespace {
+constexpr double kDx = 1.0e-3, kRho = 2000.0;
+constexpr int kN = 15;
+
+/// Lattice kernel moment m = Σ_j V (x_j − x_i) ∂W/∂x_i for a full neighbourhood, from the formula.
+double lattice_moment(const CubicSpline& W) {
+  double m = 0.0;
+  for (int a = -4; a <= 4; ++a)
+    for (int b = -4; b <= 4; ++b) {
+      const double xj = a * kDx, r = std::hypot(a * kDx, b * kDx);
+      if (r > 0.0) m += kDx * kDx * xj * W.derivative(r) * (-xj) / r;
+    }
+  return m;
+}
+
+bool interior(const Particles& p, std::size_t i) {
+  const double lo = 3.5 * kDx, hi = (kN - 4.5) * kDx;
+  return p.x[i] > lo && p.x[i] < hi && p.y[i] > lo && p.y[i] < hi;
+}
+}  // namespace
+
+TEST_CASE("eq 11: a uniform expansion lowers the density at rate 2 e rho (times the moment)", "[stages]") {
+  const CubicSpline W(1.3 * kDx);
+  Particles p = test::lattice(kN, kDx, kRho);
+  const double e = 0.8;  // 1/s, v = e x
+  for (std::size_t i = 0; i < p.size(); ++i) p.vx[i] = e * p.x[i], p.vy[i] = e * p.y[i];
+  NeighbourList nl;
+  nl.build(p.x, p.y, W);
+  compute_density_rate(p, nl);
+  const double m = lattice_moment(W);
+  for (std::size_t i = 0; i < p.soil_count; ++i)
+    if (interior(p, i)) CHECK(p.density_rate[i] == Approx(-2.0 * e * kRho * m).epsilon(1e-10));
+}
+
+TEST_CASE("eq 12: a stress gradient accelerates by dsigma/dx / rho, a uniform stress not at all",
+          "[stages]") {
+  const CubicSpline W(1.3 * kDx);
+  Particles p = test::lattice(kN, kDx, kRho);
+  const double s0 = -500.0, a = 4.0e4, b = -2.5e4;  // Pa, Pa/m
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.sxx[i] = s0 + a * p.x[i];  // ∂σxx/∂x = a
+    p.syy[i] = s0;
+    p.sxy[i] = b * p.x[i];  // ∂σyx/∂x = b drives y
+  }
+  NeighbourList nl;
+  nl.build(p.x, p.y, W);
+  MomentumParams params;
+  params.sound_speed = 26.0;
+  params.smoothing_length = W.smoothing_length();
+  params.gravity = 9.81;
+  params.artificial_stress.enabled = false;
+  compute_acceleration(p, nl, params);
+  const double m = lattice_moment(W);
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    if (!interior(p, i)) continue;
+    // Σ V_j (σ_i + σ_j) ∇W = 2σ_i Σ V∇W + a M = a m (Σ V ∇W = 0 on the lattice).
+    CHECK(p.ax[i] == Approx(a * m / kRho).epsilon(1e-9));
+    CHECK(p.ay[i] == Approx(b * m / kRho - 9.81).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("eq 37: the viscosity pushes approaching particles apart and leaves receding ones", "[stages]") {
+  const CubicSpline W(1.3 * kDx);
+  for (const double v : {0.5, -0.5}) {  // particle 0 moves towards (+) or away from (−) particle 1
+    Particles p;
+    p.resize(2, 0);
+    p.x = {0.0, kDx}, p.y = {0.0, 0.0}, p.vx = {v, 0.0}, p.vy = {0.0, 0.0};
+    p.density = {kRho, kRho}, p.mass = {kRho * kDx * kDx, kRho * kDx * kDx};
+    NeighbourList nl;
+    nl.build(p.x, p.y, W);
+    MomentumParams params;
+    params.viscosity_alpha = 1.0, params.viscosity_beta = 1.0, params.sound_speed = 26.0;
+    params.smoothing_length = W.smoothing_length(), params.gravity = 0.0;
+    params.artificial_stress.enabled = false;
+    compute_acceleration(p, nl, params);
+    if (v > 0) {
+      // φ = h v·r/(r² + 0.01h²) with v·r = −v Δp; Π = (−α c φ + β φ²)/ρ; a0 = −m Π ∂W/∂x_0.
+      const double h = W.smoothing_length();
+      const double phi = h * (-v * kDx) / (kDx * kDx + 0.01 * h * h);
+      const double pi = (-26.0 * phi + phi * phi) / kRho;
+      const double grad = W.derivative(kDx) * (-kDx) / kDx;  // ∂W/∂x_0, x_0 − x_1 = −Δp
+      CHECK(p.ax[0] == Approx(-p.mass[1] * pi * grad));
+      CHECK(p.ax[0] < 0.0);  // decelerated, away from particle 1
+      CHECK(p.ax[1] == Approx(-p.ax[0]));
+    } else {
+      CHECK(p.ax[0] == 0.0);
+      CHECK(p.ax[1] == 0.0);
+    }
+  }
+}
+
+TEST_CASE("artificial stress: -eps sigma/rho^2 on tensile principal stresses only, rotated back",
+          "[stages]") {
+  const double eps = 0.5, T = 300.0, C = -800.0, theta = 0.4;  // Pa; principal axes at θ to x
+  const double c = std::cos(theta), s = std::sin(theta);
+  Particles p = test::lattice(2, kDx, kRho);
+  // Particle 0: tension T along (c, s), compression C across; particle 1: compression only.
+  p.sxx[0] = T * c * c + C * s * s, p.syy[0] = T * s * s + C * c * c, p.sxy[0] = (T - C) * c * s;
+  p.sxx[1] = C, p.syy[1] = 2 * C, p.sxy[1] = 0.3 * C;
+  compute_artificial_stress(p, eps);
+  const double r = -eps * T / (kRho * kRho);  // only the tensile principal value
+  CHECK(p.rxx[0] == Approx(r * c * c));
+  CHECK(p.ryy[0] == Approx(r * s * s));
+  CHECK(p.rxy[0] == Approx(r * c * s));
+  CHECK(p.rxx[1] == 0.0);
+  CHECK(p.ryy[1] == 0.0);
+  CHECK(p.rxy[1] == 0.0);
+}
+
+TEST_CASE("a rigid rotation turns the stress with the body (eq 23 spin, Jaumann terms)", "[stages]") {
+  const CubicSpline W(1.3 * kDx);
+  Particles p = test::lattice(kN, kDx, kRho);
+  const double omega = 3.0, dt = 1e-3, S = 700.0;  // rad/s counter-clockwise, s, Pa
+  for (std::size_t i = 0; i < p.size(); ++i) p.vx[i] = -omega * p.y[i], p.vy[i] = omega * p.x[i];
+  for (std::size_t i = 0; i < p.soil_count; ++i) p.state[i].stress(0, 0) = -S;  // uniaxial along x
+  NeighbourList nl;
+  nl.build(p.x, p.y, W);
+  compute_velocity_gradient(p, nl);
+  const LinearElastic model({kRho, 1.0e6, 0.3});
+  update_stress(model, p, dt);
+  // Eq 23 gives the spin −ω m (ω̇_xy = ½(∂vx/∂y − ∂vy/∂x)) and no strain rate; the Hughes–Winget
+  // rotation turns by θ with tan(θ/2) = ω m dt/2, counter-clockwise like the body:
+  // σ' = −S (cos θ, sin θ) ⊗ (cos θ, sin θ).
+  const double theta = 2.0 * std::atan(0.5 * omega * lattice_moment(W) * dt);
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    if (!interior(p, i)) continue;
+    CHECK(p.sxx[i] == Approx(-S * std::cos(theta) * std::cos(theta)).epsilon(1e-9));
+    CHECK(p.syy[i] == Approx(-S * std::sin(theta) * std::sin(theta)).epsilon(1e-9));
+    CHECK(p.sxy[i] == Approx(-S * std::cos(theta) * std::sin(theta)).epsilon(1e-9));
+  }
+}
