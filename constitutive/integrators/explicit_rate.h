@@ -2,15 +2,22 @@
 /// @file
 /// `explicit`: the paper's scheme. One forward-Euler step of the elastic–plastic rate form with the
 /// stress at the start of the increment, then the paper's stress correction:
-///   Δλ = n_f : D : Δε / (n_f : D : n_g + H)      (eq 22 for D-P, eq 29 for MCC)
+///   Δλ = (f_n + n_f : D : Δε) / (n_f : D : n_g + H)   (eq 22 for D-P, eq 29 for MCC, when f_n = 0)
 ///   Δσ = D : (Δε − Δλ n_g)                        (eq 16, 21, 28)
 ///   σ ← correct(σ + Δσ)                           (eq 30–33 for D-P, eq 34–35 for MCC)
 /// The paper states the plastic branch for states on the surface (f = 0, λ̇ > 0). Forward Euler with
 /// hardening leaves the state slightly inside the surface after each plastic step (p lags p_c), so a
 /// test on f(σ_n) would alternate plastic and elastic steps along a hardening path. The branch is
 /// therefore decided by the elastic trial: plastic when σ_n + D:Δε lies outside the surface and the
-/// increment loads it (Δλ > 0), with gradients at σ_n. First order: the drift that the correction
-/// removes is what `substep` and `implicit` avoid.
+/// increment loads it (Δλ > 0), with gradients at σ_n.
+/// Such a state is generally not on the surface (the step that crosses it starts inside; hardening
+/// steps end slightly inside). Eq 22/29 assume f_n = 0, and the forward-Euler step they give keeps
+/// f(σ) at its start value: a D-P drained plateau then stays up to one increment's stress below the
+/// peak for good, because the correction acts only outside the surface. The multiplier is therefore
+/// taken from the linearised consistency condition
+///   f_{n+1} ≈ f_n + n_f : D : (Δε − Δλ n_g) + ∂f/∂p_c Δp_c = 0  ⇒  Δλ = (f_n + n_f:D:Δε)/(n_f:D:n_g + H),
+/// which is eq 22/29 on the surface and pulls an inside start onto it. First order: the remaining
+/// error is what `substep` and `implicit` remove.
 #include "constitutive/state.h"
 
 namespace soilsph {
@@ -31,7 +38,7 @@ State explicit_update(const Model& model, const State& start, const Mat3& strain
   if (model.yield(sigma + elastic_stress_increment, start.pc) > 0.0) {
     const Mat3 n_f = model.yield_gradient(sigma, start.pc);
     const Mat3 n_g = model.flow_direction(sigma, start.pc);
-    const double numerator = ddot(n_f, elastic_stress_increment);
+    const double numerator = model.yield(sigma, start.pc) + ddot(n_f, elastic_stress_increment);
     // With strong softening (MCC dry side, H → −n_f:D:n_g) the forward-Euler Δλ diverges and the
     // exact hardening p_c·exp(θ tr Δε^p) underflows to 0 (found by the stress test). The
     // denominator is therefore kept ≥ 0.1 n_f:D:n_g, i.e. Δλ at most 10× the perfectly plastic

@@ -53,12 +53,15 @@ TEST_CASE("MCC: substep meets its tolerance in few increments, implicit converge
   }
 }
 
-TEST_CASE("D-P undrained triaxial: implicit and substep return along D:n_g exactly, explicit does not",
+TEST_CASE("D-P undrained triaxial: every scheme follows the cone exactly",
           "[integrators][cvode]") {
   const Material dp = test::drucker_prager();
   const PointTest t = triaxial(LoadPath::TriaxialUndrained, 20);
   const PointCurve reference = run_point_test(dp, t, "cvode");
   CHECK(path_error(run_point_test(dp, t, "implicit"), reference) <= 1e-10);
   CHECK(path_error(run_point_test(dp, t, "substep"), reference) <= 1e-8);
-  CHECK(path_error(run_point_test(dp, t, "explicit"), reference) >= 1e-3);  // the paper's eq 32–33 scaling
+  // explicit: with Δλ from the linearised consistency condition (f_n + n_f:D:Δε) the step lands on
+  // the cone, which is flat along this path, so the paper's eq 32–33 scaling has nothing to do.
+  // (With eq 22's f_n = 0 form the error was 2e-2.)
+  CHECK(path_error(run_point_test(dp, t, "explicit"), reference) <= 1e-8);
 }

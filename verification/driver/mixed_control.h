@@ -52,6 +52,9 @@ Trial evaluate(const Model& model, const State& state, const Partition& part, co
     t.residual(part.free[a]) = sigma(part.free[a]) - target(part.free[a]);
     t.norm = std::max(t.norm, std::abs(t.residual(part.free[a])));
   }
+  // std::max drops a NaN, so a non-finite trial (e.g. from a singular tangent solve) must be
+  // caught here, or it would pass as converged.
+  if (!sigma.allFinite() || !std::isfinite(t.state.pc)) t.norm = std::numeric_limits<double>::infinity();
   return t;
 }
 
