@@ -66,7 +66,9 @@ double TableReader::number(std::string_view key, Range range, std::string_view u
 
 double TableReader::number_or(std::string_view key, double fallback, Range range,
                               std::string_view unit) const {
-  return has(key) ? number(key, range, unit) : (used_.emplace(key), fallback);
+  if (has(key)) return number(key, range, unit);
+  used_.emplace(key);
+  return fallback;
 }
 
 long long TableReader::integer_or(std::string_view key, long long fallback, long long lo,
@@ -105,7 +107,9 @@ std::string TableReader::choice(std::string_view key, std::span<const std::strin
 
 std::string TableReader::choice_or(std::string_view key, std::string_view fallback,
                                    std::span<const std::string_view> allowed) const {
-  return has(key) ? choice(key, allowed) : (used_.emplace(key), std::string(fallback));
+  if (has(key)) return choice(key, allowed);
+  used_.emplace(key);
+  return std::string(fallback);
 }
 
 void TableReader::accept(std::initializer_list<std::string_view> keys) const {

@@ -4,6 +4,7 @@
 /// that the table holds must be consumed (or declared known), and every error names the file, the
 /// key and the allowed range, so that a bad input never crashes or falls back silently.
 #include <initializer_list>
+#include <limits>
 #include <set>
 #include <span>
 #include <stdexcept>
