@@ -34,7 +34,7 @@ Mat3 diagonal(double a, double b, double c) {
 TEST_CASE("implicit consistent tangent matches central differences of the update", "[integrators][tangent]") {
   SECTION("Drucker-Prager, elastic, cone (associated and non-associated) and apex") {
     for (double psi : {0.0, 10.0}) {
-      const DruckerPrager dp(with(test::table1_drucker_prager(2e3, psi), Integrator::Implicit));
+      const DruckerPrager dp(with(test::table1_drucker_prager_params(2e3, psi), Integrator::Implicit));
       State s;
       s.stress = isotropic_stress(20e3);
       check_tangent(dp, s, diagonal(-1e-4, 0.5e-4, 0.3e-4));  // elastic
@@ -49,7 +49,7 @@ TEST_CASE("implicit consistent tangent matches central differences of the update
   }
   SECTION("Modified Cam-Clay, both elasticities: elastic, hardening, softening") {
     for (auto kind : {Elasticity::Kind::Constant, Elasticity::Kind::PressureDependent}) {
-      const ModifiedCamClay mcc(with(test::table1_cam_clay(kind), Integrator::Implicit));
+      const ModifiedCamClay mcc(with(test::table1_cam_clay_params(kind), Integrator::Implicit));
       State nc;
       nc.stress = isotropic_stress(100e3);
       nc.pc = 100e3;
@@ -70,8 +70,8 @@ TEST_CASE("implicit consistent tangent matches central differences of the update
 TEST_CASE("the same increment applied to the same state gives the same stress bit for bit", "[integrators]") {
   std::mt19937_64 rng(7);
   for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
-    const DruckerPrager dp(with(test::table1_drucker_prager(1e3, 5.0), scheme));
-    const ModifiedCamClay mcc(with(test::table1_cam_clay(Elasticity::Kind::PressureDependent), scheme));
+    const DruckerPrager dp(with(test::table1_drucker_prager_params(1e3, 5.0), scheme));
+    const ModifiedCamClay mcc(with(test::table1_cam_clay_params(Elasticity::Kind::PressureDependent), scheme));
     State s;
     s.stress = isotropic_stress(50e3);
     s.pc = 60e3;
@@ -89,7 +89,7 @@ TEST_CASE("the same increment applied to the same state gives the same stress bi
 TEST_CASE("substep and implicit follow the MCC NCL much tighter than explicit",
           "[integrators][closed-form]") {
   // Isotropic loading on the NCL: ε_v = λ/(1+e0) ln(p/p_i), so p = p_i exp(ε_v (1+e0)/λ), p_c = p.
-  const auto params = test::table1_cam_clay(Elasticity::Kind::PressureDependent);
+  const auto params = test::table1_cam_clay_params(Elasticity::Kind::PressureDependent);
   const double lambda_star = params.compression_index / (1 + params.initial_void_ratio);
   const double p_i = 100e3, eps_v = lambda_star * std::log(4.0);  // to p = 400 kPa
   const int n = 10;
@@ -114,7 +114,7 @@ TEST_CASE("implicit D-P return lands exactly on the cone or at the apex", "[inte
   std::mt19937_64 rng(11);
   for (double cohesion : {0.0, 5e3}) {
     for (double psi : {0.0, 10.0}) {
-      const DruckerPrager dp(with(test::table1_drucker_prager(cohesion, psi), Integrator::Implicit));
+      const DruckerPrager dp(with(test::table1_drucker_prager_params(cohesion, psi), Integrator::Implicit));
       const Mat3 apex = dp.apex_first_invariant() / 3.0 * Mat3::Identity();
       int cone = 0, at_apex = 0;
       for (int k = 0; k < 400; ++k) {
@@ -145,7 +145,7 @@ TEST_CASE("implicit D-P return lands exactly on the cone or at the apex", "[inte
 
 TEST_CASE("substep meets its error tolerance on a large triaxial-like increment", "[integrators]") {
   // Reference: the same path in 200 increments with a tolerance 1e-11.
-  const auto params = test::table1_cam_clay(Elasticity::Kind::PressureDependent);
+  const auto params = test::table1_cam_clay_params(Elasticity::Kind::PressureDependent);
   const Mat3 path = diagonal(-5e-2, 1.5e-2, 1.5e-2);
   auto run = [&](double tolerance, int n) {
     const ModifiedCamClay mcc(with(params, Integrator::Substep, tolerance));

@@ -98,7 +98,7 @@ TEST_CASE("MCC correction moves (p, q) towards the ellipse centre onto the surfa
 TEST_CASE("MCC isotropic compression follows the NCL and the swelling line", "[plastic][closed-form]") {
   // Loading on the NCL: ε_v = λ/(1+e0) ln(p/p_i); unloading: ε_v = κ/(1+e0) ln(p/p_max).
   // The explicit scheme is first order: the error halves when the increments are halved.
-  const ModifiedCamClay::Params params = test::table1_cam_clay(Elasticity::Kind::PressureDependent);
+  const ModifiedCamClay::Params params = test::table1_cam_clay_params(Elasticity::Kind::PressureDependent);
   const ModifiedCamClay mcc(params);
   const double lambda_star = params.compression_index / (1 + params.initial_void_ratio);
   const double kappa_star = params.swelling_index / (1 + params.initial_void_ratio);

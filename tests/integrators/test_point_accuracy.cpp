@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "../verification/materials.h"
+#include "tests/common/table1_materials.h"
 #include "verification/point_test.h"
 
 using namespace soilsph;
@@ -34,7 +34,7 @@ PointTest triaxial(LoadPath path, int increments) {
 
 TEST_CASE("MCC: substep meets its tolerance in few increments, implicit converges at first order",
           "[integrators][cvode]") {
-  const Material mcc = test::cam_clay(Elasticity::Kind::Constant);  // Table 1 (E = 1 MPa)
+  const Material mcc = test::table1_cam_clay(Elasticity::Kind::Constant);  // Table 1 (E = 1 MPa)
   for (LoadPath path : {LoadPath::TriaxialDrained, LoadPath::TriaxialUndrained}) {
     INFO(load_path_name(path));
     // substep (tolerance 1e-6): undrained is strain-driven, so only the tolerance limits it; drained
@@ -55,7 +55,7 @@ TEST_CASE("MCC: substep meets its tolerance in few increments, implicit converge
 
 TEST_CASE("D-P undrained triaxial: every scheme follows the cone exactly",
           "[integrators][cvode]") {
-  const Material dp = test::drucker_prager();
+  const Material dp = test::table1_drucker_prager();
   const PointTest t = triaxial(LoadPath::TriaxialUndrained, 20);
   const PointCurve reference = run_point_test(dp, t, "cvode");
   CHECK(path_error(run_point_test(dp, t, "implicit"), reference) <= 1e-10);

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "materials.h"
+#include "tests/common/table1_materials.h"
 #include "verification/point_test.h"
 
 using namespace soilsph;
@@ -37,7 +37,7 @@ TEST_CASE("cvode: MCC isotropic compression follows the NCL eps_v = lambda/(1+e0
   // Pressure-dependent elasticity: on the NCL p = p_c, ε_v^e = κ/(1+e0) ln(p/p_i) and
   // ε_v^p = (λ−κ)/(1+e0) ln(p_c/p_c0) (eq 27), so ε_v = λ/(1+e0) ln(p/p_i). Unloading and
   // reloading follow the swelling line ε_v = ε_v,max − κ/(1+e0) ln(p_max/p) until p = p_c.
-  const ModifiedCamClay mcc = test::cam_clay();
+  const ModifiedCamClay mcc = test::table1_cam_clay();
   const double lambda_star = 0.085 / 1.68, kappa_star = 0.019 / 1.68, p_i = 100e3;
   const PointCurve curve =
       run_point_test(mcc, make_test(LoadPath::Isotropic, {0.1, 0.08, 0.15}, 50), "cvode");
@@ -57,7 +57,7 @@ TEST_CASE("cvode: MCC isotropic compression follows the NCL eps_v = lambda/(1+e0
 TEST_CASE("cvode: reloading to a turning point that falls on an increment", "[cvode]") {
   // Unload–reload is elastic and reversible, so the state at ε_v = 0.2 on reload is the state at the
   // end of the first leg; the yield root then falls (within round-off) on that output time.
-  const ModifiedCamClay mcc = test::cam_clay(Elasticity::Kind::Constant);
+  const ModifiedCamClay mcc = test::table1_cam_clay(Elasticity::Kind::Constant);
   const PointCurve curve =
       run_point_test(mcc, make_test(LoadPath::Isotropic, {0.2, 0.1, 0.2, 0.3}, 7), "cvode");
   REQUIRE(curve.size() == 29);
@@ -73,7 +73,7 @@ TEST_CASE("cvode: D-P drained triaxial peak q = (3 alpha p_i + k_c)/(1/sqrt3 - a
   // q (1/√3 − α_φ) = 3 α_φ p_i + k_c (docs/derivations.md). Before yield q = E ε_a.
   const double cohesion = GENERATE(0.0, 5e3);
   const double dilatancy = GENERATE(0.0, 10.0);
-  const DruckerPrager dp = test::drucker_prager(cohesion, dilatancy);
+  const DruckerPrager dp = test::table1_drucker_prager(cohesion, dilatancy);
   const double p_i = 100e3, E = 1e6;
   const double q_peak = (3 * dp.alpha_phi() * p_i + dp.k_c()) / (1 / std::sqrt(3.0) - dp.alpha_phi());
   const PointCurve curve = run_point_test(dp, make_test(LoadPath::TriaxialDrained, {0.3}, 60), "cvode");
@@ -91,7 +91,7 @@ TEST_CASE("explicit converges to cvode at first order (MCC drained and undrained
           "[cvode][explicit]") {
   const Elasticity::Kind kind = GENERATE(Elasticity::Kind::PressureDependent, Elasticity::Kind::Constant);
   const LoadPath path = GENERATE(LoadPath::TriaxialDrained, LoadPath::TriaxialUndrained);
-  const ModifiedCamClay mcc = test::cam_clay(kind);
+  const ModifiedCamClay mcc = test::table1_cam_clay(kind);
   double previous[2] = {0.0, 0.0};
   for (int increments : {100, 200, 400}) {
     const PointTest test = make_test(path, {0.1}, increments);
@@ -115,14 +115,14 @@ TEST_CASE("cvode: isotropic extension to the D-P apex", "[cvode]") {
   const double K = 1e6 / (3 * (1 - 2 * 0.3));
   const PointTest test = make_test(LoadPath::Isotropic, {-0.2}, 10);
   SECTION("with dilatancy the stress stays at the apex") {
-    const PointCurve curve = run_point_test(test::drucker_prager(0.0, 10.0), test, "cvode");
+    const PointCurve curve = run_point_test(test::table1_drucker_prager(0.0, 10.0), test, "cvode");
     for (const PointRecord& r : curve) {
       CHECK(r.p == Approx(std::max(100e3 + K * r.eps_v, 0.0)).margin(1e-6 * 100e3));
       CHECK(r.q == Approx(0.0).margin(1e-6 * 100e3));
     }
   }
   SECTION("without dilatancy the flow rule has no solution there: a clear error, not NaN") {
-    CHECK_THROWS_WITH(run_point_test(test::drucker_prager(0.0, 0.0), test, "cvode"), Catch::Contains("apex"));
+    CHECK_THROWS_WITH(run_point_test(test::table1_drucker_prager(0.0, 0.0), test, "cvode"), Catch::Contains("apex"));
   }
 }
 
@@ -130,7 +130,7 @@ TEST_CASE("cvode: no continuum solution past an MCC dry-side snap-back is an err
   // Table 1 constants with constant E, OCR 4, undrained: p' stays at p_i until first yield at
   // q² = M² p (p_c − p); there n:D:n + H < 0 (derivations: n:D:n = K M⁴(2p − p_c)² + 12 G q²,
   // H = (1+e0)/(λ−κ) p p_c M⁴ (2p − p_c)), so plastic loading under strain control is impossible.
-  const ModifiedCamClay mcc = test::cam_clay(Elasticity::Kind::Constant);
+  const ModifiedCamClay mcc = test::table1_cam_clay(Elasticity::Kind::Constant);
   const double p = 100e3, pc = 400e3, M = mcc.M();
   const double q2 = M * M * p * (pc - p);
   const Moduli D = mcc.elasticity().at(p);

@@ -2,7 +2,7 @@
 // Hooke's law (for the driver and the CVODE reference), strain paths against the built-in paths.
 #include <catch2/catch.hpp>
 
-#include "materials.h"
+#include "tests/common/table1_materials.h"
 #include "verification/paths/load_path.h"
 #include "verification/point_test.h"
 
@@ -23,8 +23,8 @@ TEST_CASE("drained triaxial: the driver holds the radial stress to 1e-10 relativ
   const std::string integrator = GENERATE("explicit", "cvode");
   // Load, unload, reload: the legs cross first yield, elastic unloading and re-yielding.
   PointTest test = make_test(LoadPath::TriaxialDrained, {0.3, 0.15, 0.35}, 100);
-  const std::vector<Material> materials = {test::drucker_prager(), test::drucker_prager(5e3, 10.0),
-                                           test::cam_clay(), test::cam_clay(Elasticity::Kind::Constant)};
+  const std::vector<Material> materials = {test::table1_drucker_prager(), test::table1_drucker_prager(5e3, 10.0),
+                                           test::table1_cam_clay(), test::table1_cam_clay(Elasticity::Kind::Constant)};
   for (const Material& material : materials) {
     for (double ocr : {1.0, 4.0}) {
       test.ocr = ocr;
@@ -47,7 +47,7 @@ TEST_CASE("drained triaxial with huge explicit increments: damped Newton still h
   for (int increments : {10, 12}) {
     PointTest test = make_test(LoadPath::TriaxialDrained, {0.2}, increments);
     test.ocr = 30.0;
-    const PointCurve curve = run_point_test(test::cam_clay(), test, "explicit");
+    const PointCurve curve = run_point_test(test::table1_cam_clay(), test, "explicit");
     REQUIRE(curve.size() == static_cast<std::size_t>(increments + 1));
     for (const PointRecord& r : curve) {
       CHECK(std::isfinite(r.q));
@@ -122,7 +122,7 @@ TEST_CASE("linear elastic isotropic: p = p_i + K eps_v", "[driver][elastic]") {
 
 TEST_CASE("a strain path reproduces the built-in path with the same increments", "[driver][strain-path]") {
   const std::string integrator = GENERATE("explicit", "cvode");
-  const Material material = test::cam_clay();
+  const Material material = test::table1_cam_clay();
   const PointTest undrained = make_test(LoadPath::TriaxialUndrained, {0.05}, 50);
   PointTest path = make_test(LoadPath::StrainPath, {}, 1);
   Mat3 d = Mat3::Zero();
@@ -143,7 +143,7 @@ TEST_CASE("a strain path reproduces the built-in path with the same increments",
 }
 
 TEST_CASE("invalid tests are rejected with the offending field named", "[driver][validation]") {
-  const Material material = test::cam_clay();
+  const Material material = test::table1_cam_clay();
   PointTest t;
   t.ocr = 0.5;
   CHECK_THROWS_WITH(run_point_test(material, t, "explicit"), Catch::Contains("ocr"));
@@ -167,15 +167,15 @@ TEST_CASE("invalid tests are rejected with the offending field named", "[driver]
 }
 
 TEST_CASE("with_integrator replaces the scheme and keeps every other parameter", "[driver]") {
-  const Material mcc = with_integrator(test::cam_clay(), parse_integrator("explicit"));
+  const Material mcc = with_integrator(test::table1_cam_clay(), parse_integrator("explicit"));
   REQUIRE(std::holds_alternative<ModifiedCamClay>(mcc));
   const auto& m = std::get<ModifiedCamClay>(mcc);
   CHECK(m.integrator() == Integrator::Explicit);
-  CHECK(m.M() == test::cam_clay().M());
-  CHECK(m.hardening_exponent() == test::cam_clay().hardening_exponent());
-  CHECK(m.elasticity().at(50e3).K == test::cam_clay().elasticity().at(50e3).K);
-  const Material dp = with_integrator(test::drucker_prager(5e3, 10.0), Integrator::Explicit);
-  CHECK(std::get<DruckerPrager>(dp).k_c() == test::drucker_prager(5e3, 10.0).k_c());
+  CHECK(m.M() == test::table1_cam_clay().M());
+  CHECK(m.hardening_exponent() == test::table1_cam_clay().hardening_exponent());
+  CHECK(m.elasticity().at(50e3).K == test::table1_cam_clay().elasticity().at(50e3).K);
+  const Material dp = with_integrator(test::table1_drucker_prager(5e3, 10.0), Integrator::Explicit);
+  CHECK(std::get<DruckerPrager>(dp).k_c() == test::table1_drucker_prager(5e3, 10.0).k_c());
   const Material le = with_integrator(test::linear_elastic(3e6), Integrator::Explicit);
   CHECK(std::get<LinearElastic>(le).params().young_modulus == 3e6);
 }
