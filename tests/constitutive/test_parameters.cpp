@@ -134,7 +134,7 @@ TEST_CASE("string arrays are read with the allowed names in every message", "[pa
   CHECK_THROWS_AS(read("names = {a = 1}"), ParameterError);
 }
 
-TEST_CASE("--set parses a TOML array", "[parameters]") {
+TEST_CASE("an override (--set) may be a TOML array", "[parameters]") {
   toml::table root;
   apply_override(root, R"(output.fields=["p","q"])");
   const toml::array* fields = root["output"]["fields"].as_array();
