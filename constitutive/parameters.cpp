@@ -179,7 +179,15 @@ void apply_override(toml::table& root, std::string_view assignment) {
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + text);
-  } catch (const toml::parse_error&) {
+  } catch (const toml::parse_error& e) {
+    // An array or inline table must be valid TOML: `[p,q]` is what a shell leaves of ["p","q"].
+    if (text.starts_with('[') || text.starts_with('{')) {
+      throw ParameterError("--set " + std::string(assignment) + ": not a TOML value (" +
+                           std::string(e.description()) +
+                           "); strings inside an array need double quotes, which the shell keeps "
+                           "inside single quotes: --set '" +
+                           section + "." + key + "=[\"a\",\"b\"]'");
+    }
     parsed.insert_or_assign("v", text);  // a bare word such as modified-cam-clay is a string
   }
   table->insert_or_assign(key, *parsed.get("v"));

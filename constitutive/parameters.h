@@ -98,7 +98,8 @@ class TableReader {
 toml::table parse_toml_file(const std::string& path);
 
 /// Applies one `section.key=value` override (the `--set` option) to `root`. The value is parsed
-/// as a TOML value (number, boolean, quoted or bare string); the key must name an existing table.
+/// as a TOML value (number, boolean, quoted or bare string, array); the key must name an existing
+/// table. A value starting with `[` or `{` that is not valid TOML is an error (not a bare string).
 void apply_override(toml::table& root, std::string_view assignment);
 
 }  // namespace soilsph

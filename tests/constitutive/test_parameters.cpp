@@ -142,4 +142,8 @@ TEST_CASE("an override (--set) may be a TOML array", "[parameters]") {
   REQUIRE(fields->size() == 2);
   CHECK(fields->at(0).value<std::string>() == "p");
   CHECK(fields->at(1).value<std::string>() == "q");
+  // What a shell leaves of an unquoted ["p","q"] is not taken for the string "[p,q]".
+  CHECK_THROWS_WITH(apply_override(root, "output.fields=[p,q]"),
+                    Contains("--set output.fields=[p,q]: not a TOML value") &&
+                        Contains(R"(--set 'output.fields=["a","b"]')"));
 }
