@@ -112,6 +112,32 @@ std::string TableReader::choice_or(std::string_view key, std::string_view fallba
   return std::string(fallback);
 }
 
+std::vector<std::string> TableReader::choices_or(std::string_view key,
+                                                 std::span<const std::string_view> fallback,
+                                                 std::span<const std::string_view> allowed) const {
+  std::string options;
+  for (std::string_view a : allowed) options += (options.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+  const toml::node* node = find(key);
+  if (!node) return {fallback.begin(), fallback.end()};
+  const toml::array* array = node->as_array();
+  if (!array)
+    fail(key, "must be an array of names, e.g. [\"" + std::string(allowed.front()) +
+                  "\"] (allowed: " + options + ")");
+  std::vector<std::string> names;
+  for (const toml::node& element : *array) {
+    const std::optional<std::string> value = element.value_exact<std::string>();
+    if (!value) fail(key, "must hold only strings (allowed: " + options + ")");
+    bool known = false;
+    for (std::string_view a : allowed) known = known || *value == a;
+    if (!known) fail(key, "\"" + *value + "\" is not allowed (allowed: " + options + ")");
+    for (const std::string& earlier : names) {
+      if (earlier == *value) fail(key, "\"" + *value + "\" is listed twice (allowed: " + options + ")");
+    }
+    names.push_back(*value);
+  }
+  return names;
+}
+
 void TableReader::accept(std::initializer_list<std::string_view> keys) const {
   for (std::string_view k : keys) used_.emplace(k);
 }
@@ -153,7 +179,15 @@ void apply_override(toml::table& root, std::string_view assignment) {
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + text);
-  } catch (const toml::parse_error&) {
+  } catch (const toml::parse_error& e) {
+    // An array or inline table must be valid TOML: `[p,q]` is what a shell leaves of ["p","q"].
+    if (text.starts_with('[') || text.starts_with('{')) {
+      throw ParameterError("--set " + std::string(assignment) + ": not a TOML value (" +
+                           std::string(e.description()) +
+                           "); strings inside an array need double quotes, which the shell keeps "
+                           "inside single quotes: --set '" +
+                           section + "." + key + "=[\"a\",\"b\"]'");
+    }
     parsed.insert_or_assign("v", text);  // a bare word such as modified-cam-clay is a string
   }
   table->insert_or_assign(key, *parsed.get("v"));

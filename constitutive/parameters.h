@@ -66,6 +66,11 @@ class TableReader {
                         std::initializer_list<std::string_view> allowed) const {
     return choice_or(key, fallback, std::span(allowed.begin(), allowed.size()));
   }
+  /// An optional array of distinct strings, each one of `allowed`; `fallback` when the key is absent.
+  /// A non-array value, a non-string element, a name not in `allowed` or a repeated name is an error
+  /// naming the file, the key and the allowed names. An empty array is allowed.
+  std::vector<std::string> choices_or(std::string_view key, std::span<const std::string_view> fallback,
+                                      std::span<const std::string_view> allowed) const;
   /// Marks keys as known without reading them (for keys that belong to another consumer).
   void accept(std::initializer_list<std::string_view> keys) const;
   /// Throws for any key of the table that was neither read nor accepted.
@@ -93,7 +98,8 @@ class TableReader {
 toml::table parse_toml_file(const std::string& path);
 
 /// Applies one `section.key=value` override (the `--set` option) to `root`. The value is parsed
-/// as a TOML value (number, boolean, quoted or bare string); the key must name an existing table.
+/// as a TOML value (number, boolean, quoted or bare string, array); the key must name an existing
+/// table. A value starting with `[` or `{` that is not valid TOML is an error (not a bare string).
 void apply_override(toml::table& root, std::string_view assignment);
 
 }  // namespace soilsph

@@ -12,6 +12,8 @@ reads DIR/frames.h5 and DIR/summary.json (docs/sph-output.md) and writes
                                           (labels: summary.json's model; a triangle marks the toe
                                           that summary.json's runout_m measures)
 Axes are in cm with equal aspect and a 2 cm x 2 cm background grid as in the paper.
+The velocity pictures need the field `velocity` or `speed` and deposit.png needs `layer` ([output]
+fields of the scene): if a run lacks one, the script says which field is missing and skips that picture.
 """
 import argparse
 import json
@@ -50,17 +52,28 @@ class Run:
         self.spacing = spacing if spacing > 0 else self.estimate_spacing()
 
     def frame(self, index):
-        """Positions (m), speed (m/s) and layer ids of frame `index`."""
+        """Positions (m) and, where the frame holds them, speed (m/s) and layer ids of frame `index`."""
         group = self.h5[self.names[index]]
         position = group["position"][()]
-        velocity = group["velocity"][()]
-        return {
-            "time": self.times[index],
-            "x": position[:, 0],
-            "y": position[:, 1],
-            "speed": np.hypot(velocity[:, 0], velocity[:, 1]),
-            "layer": group["layer"][()],
-        }
+        frame = {"time": self.times[index], "x": position[:, 0], "y": position[:, 1]}
+        if "velocity" in group:
+            velocity = group["velocity"][()]
+            frame["speed"] = np.hypot(velocity[:, 0], velocity[:, 1])
+        elif "speed" in group:
+            frame["speed"] = group["speed"][()]
+        if "layer" in group:
+            frame["layer"] = group["layer"][()]
+        return frame
+
+    def lacks(self, datasets, indices, picture):
+        """True (after saying so on stderr) if none of `datasets` is in one of the frames `indices`."""
+        for index in indices:
+            group = self.h5[self.names[index]]
+            if not any(name in group for name in datasets):
+                print(f"plot_collapse: {self.dir / 'frames.h5'}:/{self.names[index]} has no "
+                      f"{' or '.join(datasets)} field ([output] fields): skipping {picture}", file=sys.stderr)
+                return True
+        return False
 
     def nearest(self, time):
         return int(np.argmin(np.abs(self.times - time)))
@@ -122,6 +135,8 @@ def draw_speed(ax, run, frame, limits, vmax):
 
 def plot_velocity(run):
     indices = [run.nearest(t) for t in SNAPSHOT_TIMES]
+    if run.lacks(("velocity", "speed"), indices, "velocity_t*.png and velocity.png"):
+        return
     frames = [run.frame(i) for i in indices]
     limits = extent(frames + [run.frame(0), run.frame(len(run.names) - 1)], run.spacing)
     vmax = max(max(float(f["speed"].max()) for f in frames), 1e-12)  # one colour scale for all four
@@ -143,6 +158,8 @@ def plot_velocity(run):
 
 
 def plot_deposit(run):
+    if run.lacks(("layer",), [len(run.names) - 1], "deposit.png"):
+        return
     final = run.frame(len(run.names) - 1)
     limits = extent([run.frame(0), final], run.spacing)
     fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
@@ -207,7 +224,7 @@ def main():
     if args.compare:
         plot_profiles([run] + [Run(d) for d in args.compare])
     written = sorted(p.name for p in run.dir.glob("*.png"))
-    print(f"plot_collapse: wrote {', '.join(written)} in {run.dir}")
+    print(f"plot_collapse: wrote {', '.join(written) or 'no picture'} in {run.dir}")
 
 
 if __name__ == "__main__":

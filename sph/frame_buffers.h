@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Fills the derived per-particle fields a Frame shows (stress components, p, q, plastic strain)
-/// from the particles, into buffers reused from frame to frame, and returns the Frame view.
+/// from the particles, into buffers reused from frame to frame, and returns the Frame view; fields
+/// not selected for output are not computed.
 #include <algorithm>
 #include <vector>
 
@@ -12,16 +13,27 @@ namespace soilsph::sph {
 
 class FrameBuffers {
  public:
-  /// A view of the soil particles of `p` at time t.
-  Frame view(const Particles& p, double t) {
+  /// A view of the soil particles of `p` at time t. Only the derived fields in `fields` are
+  /// computed; the spans of the others are empty (a FrameWriter with the same fields skips them).
+  Frame view(const Particles& p, double t, FieldSet fields = FieldSet::all()) {
     const std::size_t n = p.soil_count;
-    for (auto* a : {&sxx_, &syy_, &szz_, &sxy_, &p_, &q_, &plastic_}) a->resize(n);
+    const bool stress = fields.contains(Field::stress), mean = fields.contains(Field::p),
+               mises = fields.contains(Field::q), plastic = fields.contains(Field::plastic_strain);
+    for (auto* a : {&sxx_, &syy_, &szz_, &sxy_}) a->resize(stress ? n : 0);
+    p_.resize(mean ? n : 0);
+    q_.resize(mises ? n : 0);
+    plastic_.resize(plastic ? n : 0);
     for (std::size_t i = 0; i < n; ++i) {
       const State& s = p.state[i];
-      sxx_[i] = s.stress(0, 0), syy_[i] = s.stress(1, 1), szz_[i] = s.stress(2, 2), sxy_[i] = s.stress(0, 1);
-      p_[i] = mean_pressure(s.stress);
-      q_[i] = deviatoric_stress(s.stress);
-      plastic_[i] = s.plastic_shear_strain;
+      if (stress) {
+        sxx_[i] = s.stress(0, 0);
+        syy_[i] = s.stress(1, 1);
+        szz_[i] = s.stress(2, 2);
+        sxy_[i] = s.stress(0, 1);
+      }
+      if (mean) p_[i] = mean_pressure(s.stress);
+      if (mises) q_[i] = deviatoric_stress(s.stress);
+      if (plastic) plastic_[i] = s.plastic_shear_strain;
     }
     Frame f;
     f.time = t;

@@ -56,11 +56,13 @@ Numerics read_numerics(const TableReader& t) {
   return n;
 }
 
-/// Every frame holds all fields of sph/output/frame.h (the writer has no field selection yet).
+/// `fields` selects the frame datasets (names: kFieldNames in sph/output/frame.h); default: all of them.
 OutputSettings read_output(const TableReader& t, double end_time) {
   OutputSettings o{};
   o.frame_interval = t.number_or("frame_interval", 0.01, Range::open(0.0, end_time * (1 + 1e-9)), "s");
   o.layer_thickness = t.number_or("layer_thickness", 0.01, Range::positive(), "m");
+  for (const std::string& name : t.choices_or("fields", kFieldNames, kFieldNames))
+    o.fields.insert(*field_named(name));
   return o;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "constitutive/material.h"
+#include "sph/output/frame.h"
 
 namespace soilsph::sph {
 
@@ -50,6 +51,7 @@ struct Numerics {
 struct OutputSettings {
   double frame_interval;   ///< s between HDF5 frames
   double layer_thickness;  ///< m, thickness of the coloured horizontal layers
+  FieldSet fields;         ///< fields written in every frame besides the positions (default: all)
 };
 
 struct Scene {

@@ -46,13 +46,13 @@ void run_collapse(const CollapseOptions& o) {
             << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.time_step << " s, " << setup.steps
             << " steps, " << o.threads << " thread(s)" << std::endl;
 
-  FrameWriter writer(o.out);
+  FrameWriter writer(o.out, scene.output.fields);
   FrameBuffers buffers;
   Progress progress(scene.geometry.end_time);
   const auto on_frame = [&](const Particles& p, double t) {
     if (!all_finite(p))
       throw std::runtime_error("the solution is no longer finite at t = " + std::to_string(t) + " s");
-    writer.write(buffers.view(p, t));
+    writer.write(buffers.view(p, t, scene.output.fields));
   };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
   const RunStatistics stats = std::visit(

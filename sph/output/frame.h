@@ -5,12 +5,55 @@
 /// Conventions (see docs/sph-output.md): SI units; 2D plane strain in x (horizontal) and y (vertical,
 /// up); stress components tension-positive as inside the solver (paper eq 9–10); p and q
 /// compression-positive soil-mechanics invariants (constitutive/tensor.h).
+#include <array>
+#include <cstdint>
+#include <optional>
 #include <span>
+#include <string_view>
 
 namespace soilsph::sph {
 
+/// The selectable output fields of a frame (`[output] fields` in a scene). Each name is the HDF5
+/// dataset (and XDMF attribute) it writes, except `stress`, which writes the four components
+/// sxx, syy, szz, sxy together. The positions are always written (they are the XDMF geometry).
+enum class Field : std::uint8_t { velocity, speed, stress, p, q, plastic_strain, density, layer };
+
+/// The field names in the order of enum Field (and of the datasets in a frame).
+inline constexpr std::array<std::string_view, 8> kFieldNames{"velocity",       "speed",   "stress", "p", "q",
+                                                             "plastic_strain", "density", "layer"};
+
+/// The Field called `name`, or none if no field has that name.
+constexpr std::optional<Field> field_named(std::string_view name) {
+  for (std::size_t i = 0; i < kFieldNames.size(); ++i) {
+    if (kFieldNames[i] == name) return static_cast<Field>(i);
+  }
+  return std::nullopt;
+}
+
+/// A set of fields; default-constructed it is empty, FieldSet::all() holds every field.
+class FieldSet {
+ public:
+  static constexpr FieldSet all() {
+    FieldSet s;
+    s.bits_ = static_cast<std::uint32_t>((1u << kFieldNames.size()) - 1u);
+    return s;
+  }
+  constexpr FieldSet& insert(Field f) {
+    bits_ |= bit(f);
+    return *this;
+  }
+  constexpr bool contains(Field f) const { return (bits_ & bit(f)) != 0; }
+  constexpr bool empty() const { return bits_ == 0; }
+  constexpr bool operator==(const FieldSet&) const = default;
+
+ private:
+  static constexpr std::uint32_t bit(Field f) { return 1u << static_cast<unsigned>(f); }
+  std::uint32_t bits_ = 0;
+};
+
 /// A read-only view of the soil particles at one instant (boundary particles excluded unless noted).
-/// Every span has one entry per particle and they all have the same length.
+/// Every span has one entry per particle and they all have the same length; a writer that writes
+/// only some fields (FieldSet) ignores the spans of the others, which may then be empty.
 struct Frame {
   double time = 0.0;                           ///< s
   std::span<const double> x, y, vx, vy;        ///< m, m/s

@@ -117,25 +117,28 @@ std::string exact(double value) {
   return std::string(text, result.ptr);
 }
 
-/// One scalar or vector attribute of the XDMF grid: name, XDMF type, HDF5 dataset, components.
+/// One scalar or vector attribute of the XDMF grid: the field it belongs to, name (= HDF5 dataset),
+/// XDMF type, components.
 struct XdmfField {
+  Field field;
   const char* name;
   const char* attribute_type;  ///< "Scalar" or "Vector"
   const char* number_type;     ///< "Float" or "Int"
   int precision;               ///< bytes
   int components;
 };
-constexpr std::array<XdmfField, 11> kFields{{{"velocity", "Vector", "Float", 8, 3},
-                                             {"sxx", "Scalar", "Float", 8, 1},
-                                             {"syy", "Scalar", "Float", 8, 1},
-                                             {"szz", "Scalar", "Float", 8, 1},
-                                             {"sxy", "Scalar", "Float", 8, 1},
-                                             {"p", "Scalar", "Float", 8, 1},
-                                             {"q", "Scalar", "Float", 8, 1},
-                                             {"plastic_strain", "Scalar", "Float", 8, 1},
-                                             {"density", "Scalar", "Float", 8, 1},
-                                             {"layer", "Scalar", "Int", 4, 1},
-                                             {"speed", "Scalar", "Float", 8, 1}}};
+constexpr std::array<XdmfField, 11> kFields{
+    {{Field::velocity, "velocity", "Vector", "Float", 8, 3},
+     {Field::stress, "sxx", "Scalar", "Float", 8, 1},
+     {Field::stress, "syy", "Scalar", "Float", 8, 1},
+     {Field::stress, "szz", "Scalar", "Float", 8, 1},
+     {Field::stress, "sxy", "Scalar", "Float", 8, 1},
+     {Field::p, "p", "Scalar", "Float", 8, 1},
+     {Field::q, "q", "Scalar", "Float", 8, 1},
+     {Field::plastic_strain, "plastic_strain", "Scalar", "Float", 8, 1},
+     {Field::density, "density", "Scalar", "Float", 8, 1},
+     {Field::layer, "layer", "Scalar", "Int", 4, 1},
+     {Field::speed, "speed", "Scalar", "Float", 8, 1}}};
 
 /// Root dataset of the vertex indices 0..n−1 that make each of n particles a Polyvertex cell: without
 /// explicit connectivity the Xdmf3 library (ParaView's Xdmf3 readers) reads a grid of points but no
@@ -151,8 +154,8 @@ std::string dimensions(std::size_t particles, int components) {
 
 }  // namespace
 
-FrameWriter::FrameWriter(const std::filesystem::path& dir)
-    : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf") {
+FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields)
+    : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf"), fields_(fields) {
   std::filesystem::create_directories(dir);
   const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a file-access property list");
   allow_concurrent_readers(access);
@@ -165,26 +168,27 @@ FrameWriter::FrameWriter(const std::filesystem::path& dir)
 
 void FrameWriter::write(const Frame& frame) {
   const std::size_t n = frame.x.size();
-  const std::array<std::size_t, 13> sizes{frame.y.size(),
-                                          frame.vx.size(),
-                                          frame.vy.size(),
-                                          frame.sxx.size(),
-                                          frame.syy.size(),
-                                          frame.szz.size(),
-                                          frame.sxy.size(),
-                                          frame.p.size(),
-                                          frame.q.size(),
-                                          frame.plastic_strain.size(),
-                                          frame.density.size(),
-                                          frame.layer.size(),
-                                          n};
-  for (const std::size_t size : sizes) {
+  const auto check_size = [&](std::size_t size) {
     if (size != n) {
       throw std::invalid_argument("FrameWriter: the fields of the frame at t = " + exact(frame.time) +
                                   " have different lengths (" + std::to_string(size) + " vs " +
                                   std::to_string(n) + " particles)");
     }
+  };
+  const auto has = [&](Field f) { return fields_.contains(f); };
+  check_size(frame.y.size());
+  if (has(Field::velocity) || has(Field::speed)) {
+    check_size(frame.vx.size());
+    check_size(frame.vy.size());
   }
+  if (has(Field::stress)) {
+    for (const auto& s : {frame.sxx, frame.syy, frame.szz, frame.sxy}) check_size(s.size());
+  }
+  if (has(Field::p)) check_size(frame.p.size());
+  if (has(Field::q)) check_size(frame.q.size());
+  if (has(Field::plastic_strain)) check_size(frame.plastic_strain.size());
+  if (has(Field::density)) check_size(frame.density.size());
+  if (has(Field::layer)) check_size(frame.layer.size());
   const std::string name = frame_name(frames_.size());
   const std::string where = h5_path_.string() + ":/" + name + "/";
   // The file is open only while a frame is written: a reader that opens it between writes finds
@@ -196,21 +200,29 @@ void FrameWriter::write(const Frame& frame) {
     const Handle group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                        "create group " + where);
     write_double_attribute(group, "time", frame.time);
-    const std::vector<double> position = xyz(frame.x, frame.y), velocity = xyz(frame.vx, frame.vy);
+    const std::vector<double> position = xyz(frame.x, frame.y);
     write_dataset(group, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, position.data(), where);
-    write_dataset(group, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, velocity.data(), where);
-    std::vector<double> speed(n);
-    for (std::size_t i = 0; i < n; ++i) speed[i] = std::hypot(frame.vx[i], frame.vy[i]);
-    write_double(group, "speed", speed, where);
-    write_double(group, "sxx", frame.sxx, where);
-    write_double(group, "syy", frame.syy, where);
-    write_double(group, "szz", frame.szz, where);
-    write_double(group, "sxy", frame.sxy, where);
-    write_double(group, "p", frame.p, where);
-    write_double(group, "q", frame.q, where);
-    write_double(group, "plastic_strain", frame.plastic_strain, where);
-    write_double(group, "density", frame.density, where);
-    write_dataset(group, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
+    if (has(Field::velocity)) {
+      const std::vector<double> velocity = xyz(frame.vx, frame.vy);
+      write_dataset(group, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, velocity.data(), where);
+    }
+    if (has(Field::speed)) {
+      std::vector<double> speed(n);
+      for (std::size_t i = 0; i < n; ++i) speed[i] = std::hypot(frame.vx[i], frame.vy[i]);
+      write_double(group, "speed", speed, where);
+    }
+    if (has(Field::stress)) {
+      write_double(group, "sxx", frame.sxx, where);
+      write_double(group, "syy", frame.syy, where);
+      write_double(group, "szz", frame.szz, where);
+      write_double(group, "sxy", frame.sxy, where);
+    }
+    if (has(Field::p)) write_double(group, "p", frame.p, where);
+    if (has(Field::q)) write_double(group, "q", frame.q, where);
+    if (has(Field::plastic_strain)) write_double(group, "plastic_strain", frame.plastic_strain, where);
+    if (has(Field::density)) write_double(group, "density", frame.density, where);
+    if (has(Field::layer))
+      write_dataset(group, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
   }
   const std::string vertices = vertices_name(n);
   if (H5Lexists(file, vertices.c_str(), H5P_DEFAULT) <= 0) {
@@ -257,6 +269,7 @@ void FrameWriter::write_xdmf() const {
       data_item("position", "Float", 8, 3);
       out << "        </Geometry>\n";
       for (const XdmfField& field : kFields) {
+        if (!fields_.contains(field.field)) continue;
         out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << field.attribute_type
             << "\" Center=\"Node\">\n";
         data_item(field.name, field.number_type, field.precision, field.components);

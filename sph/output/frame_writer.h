@@ -13,23 +13,28 @@ namespace soilsph::sph {
 
 /// Writes DIR/frames.h5 (one group per frame: /frame_000000/{position,velocity,sxx,...} + attribute
 /// time) and DIR/frames.xdmf (a temporal collection of Polyvertex grids ParaView opens).
+/// Each frame holds the positions and only the datasets of the selected fields (FieldSet).
 /// The HDF5 file is open only inside write(), which closes it and then atomically replaces the XDMF
 /// index, and the writer takes no HDF5 file lock: a run that crashes keeps every frame written
 /// before, viewers (ParaView, h5py) can read the frames of a running simulation, and a viewer that
 /// keeps the file open does not stop the run.
 class FrameWriter {
  public:
-  /// Creates DIR if needed and truncates DIR/frames.h5 and DIR/frames.xdmf.
-  explicit FrameWriter(const std::filesystem::path& dir);
+  /// Creates DIR if needed and truncates DIR/frames.h5 and DIR/frames.xdmf. Every frame holds the
+  /// positions and the datasets of `fields` (default: all), and the XDMF index lists only those.
+  explicit FrameWriter(const std::filesystem::path& dir, FieldSet fields = FieldSet::all());
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
 
-  /// Appends a frame and rewrites the XDMF index; throws std::invalid_argument if the spans
-  /// differ in length and std::runtime_error if HDF5 or the file system fails.
+  /// Appends a frame and rewrites the XDMF index; throws std::invalid_argument if the spans of the
+  /// positions and of the selected fields differ in length (the spans of the other fields are not
+  /// read) and std::runtime_error if HDF5 or the file system fails.
   void write(const Frame& frame);
 
   /// Number of frames written so far.
   std::size_t frames() const { return frames_.size(); }
+  /// The fields written besides the positions.
+  FieldSet fields() const { return fields_; }
   /// DIR/frames.h5.
   const std::filesystem::path& h5_path() const { return h5_path_; }
   /// DIR/frames.xdmf.
@@ -43,6 +48,7 @@ class FrameWriter {
   void write_xdmf() const;
 
   std::filesystem::path h5_path_, xdmf_path_;
+  FieldSet fields_;
   std::vector<FrameEntry> frames_;
 };
 

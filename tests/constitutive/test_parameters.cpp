@@ -1,6 +1,7 @@
 // Input validation: every bad value names the file, the key and the allowed range.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <fstream>
 
 #include "helpers.h"
@@ -106,4 +107,43 @@ TEST_CASE("TOML syntax errors name the file and line", "[parameters]") {
   { std::ofstream(path) << "[material]\nmodel = \n"; }
   CHECK_THROWS_WITH(load_material(path), Contains("soilsph-test-bad.toml:2:"));
   std::remove(path.c_str());
+}
+
+TEST_CASE("string arrays are read with the allowed names in every message", "[parameters]") {
+  const std::array<std::string_view, 3> allowed{"a", "b", "c"};
+  const std::array<std::string_view, 2> fallback{"a", "c"};
+  const auto read = [&](const std::string& text) {
+    const toml::table root = toml::parse("[t]\n" + text);
+    const TableReader reader(*root["t"].as_table(), "case.toml", "t");
+    auto names = reader.choices_or("names", fallback, allowed);
+    reader.reject_unknown_keys();
+    return names;
+  };
+  using Names = std::vector<std::string>;
+  CHECK(read("") == Names{"a", "c"});
+  CHECK(read("names = [\"b\", \"a\"]") == Names{"b", "a"});
+  CHECK(read("names = []").empty());
+  const auto allowed_text = Contains(R"((allowed: "a", "b", "c"))");
+  CHECK_THROWS_WITH(read("names = [\"a\", \"d\"]"),
+                    Contains(R"(case.toml: [t] names: "d" is not allowed)") && allowed_text);
+  CHECK_THROWS_WITH(read("names = \"a\""),
+                    Contains("case.toml: [t] names: must be an array") && allowed_text);
+  CHECK_THROWS_WITH(read("names = [\"a\", 2]"),
+                    Contains("[t] names: must hold only strings") && allowed_text);
+  CHECK_THROWS_WITH(read("names = [\"b\", \"b\"]"), Contains(R"([t] names: "b" is listed twice)"));
+  CHECK_THROWS_AS(read("names = {a = 1}"), ParameterError);
+}
+
+TEST_CASE("an override (--set) may be a TOML array", "[parameters]") {
+  toml::table root;
+  apply_override(root, R"(output.fields=["p","q"])");
+  const toml::array* fields = root["output"]["fields"].as_array();
+  REQUIRE(fields);
+  REQUIRE(fields->size() == 2);
+  CHECK(fields->at(0).value<std::string>() == "p");
+  CHECK(fields->at(1).value<std::string>() == "q");
+  // What a shell leaves of an unquoted ["p","q"] is not taken for the string "[p,q]".
+  CHECK_THROWS_WITH(apply_override(root, "output.fields=[p,q]"),
+                    Contains("--set output.fields=[p,q]: not a TOML value") &&
+                        Contains(R"(--set 'output.fields=["a","b"]')"));
 }

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "helpers.h"
+#include "sph/frame_buffers.h"
 #include "sph/solver.h"
 
 using namespace soilsph;
@@ -35,6 +36,52 @@ TEST_CASE("overrides (--set) reach any key and unknown keys are errors", "[scene
                     Contains("wall_withdrawal") && Contains("\"instant\", \"none\""));
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"solver.steps=3"}),
                     Contains("[solver] is not a known table"));
+}
+
+TEST_CASE("[output] fields selects the frame datasets: default all, --set, validation", "[scene][output]") {
+  CHECK(test::shipped_scene("collapse-dp").output.fields == FieldSet::all());  // no fields key: all
+  CHECK(test::shipped_scene("collapse-mcc").output.fields == FieldSet::all());
+  CHECK(test::shipped_scene("collapse-dp", {R"(output.fields=["p","q"])"}).output.fields ==
+        FieldSet().insert(Field::p).insert(Field::q));
+  CHECK(test::shipped_scene("collapse-dp", {R"(output.fields=["velocity", "speed", "stress", "p", "q",)"
+                                            R"( "plastic_strain", "density", "layer"])"})
+            .output.fields == FieldSet::all());
+  CHECK(test::shipped_scene("collapse-dp", {"output.fields=[]"}).output.fields.empty());  // positions only
+  const auto allowed = Contains(R"((allowed: "velocity", "speed", "stress", "p", "q", "plastic_strain", )"
+                                R"("density", "layer"))");
+  CHECK_THROWS_WITH(
+      test::shipped_scene("collapse-dp", {R"(output.fields=["p","sxx"])"}),
+      Contains("collapse-dp.toml: [output] fields") && Contains(R"("sxx" is not allowed)") && allowed);
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {R"(output.fields="p")"}),
+                    Contains("collapse-dp.toml: [output] fields: must be an array") && allowed);
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"output.fields=3"}),
+                    Contains("[output] fields: must be an array") && allowed);
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"output.fields=[1]"}),
+                    Contains("[output] fields: must hold only strings") && allowed);
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {R"(output.fields=["p","p"])"}),
+                    Contains(R"([output] fields: "p" is listed twice)"));
+  CHECK_THROWS_AS(test::shipped_scene("collapse-dp", {R"(output.fields=["P"])"}), ParameterError);
+}
+
+TEST_CASE("frame buffers compute only the selected fields", "[scene][output]") {
+  const Scene scene = test::shipped_scene("collapse-mcc", {"scene.particle_spacing=0.004"});
+  Particles particles = build_particles(scene);
+  set_geostatic_state(particles, scene);
+  const std::size_t n = particles.soil_count;
+  FrameBuffers buffers;
+  const Frame all = buffers.view(particles, 0.5);
+  for (const std::size_t size :
+       {all.sxx.size(), all.syy.size(), all.szz.size(), all.sxy.size(), all.p.size(), all.q.size(),
+        all.plastic_strain.size(), all.density.size(), all.layer.size()})
+    CHECK(size == n);
+  const double p0 = all.p[n / 2];
+  const Frame some = buffers.view(particles, 0.5, FieldSet().insert(Field::p).insert(Field::layer));
+  CHECK(some.x.size() == n);
+  CHECK(some.p.size() == n);
+  CHECK(some.p[n / 2] == p0);
+  CHECK(some.layer.size() == n);
+  for (const std::size_t size : {some.sxx.size(), some.q.size(), some.plastic_strain.size()})
+    CHECK(size == 0);
 }
 
 TEST_CASE("the initial stress is geostatic and inside the yield surface", "[scene][initial]") {

@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Checks run directories written by the C++ writers with independent readers: frames.xdmf must be
 well-formed XML whose grids, times and DataItems match frames.h5 (read with h5py), and summary.json
-must parse as JSON with the contract's fields. Usage: check_files.py RUN_DIR...  (exit 1 on failure)"""
+must parse as JSON with the contract's fields. Each frame must hold exactly the datasets of the selected
+fields (--fields, the names of [output] fields; default: all) besides position, and the XDMF index must
+list exactly those. Usage: check_files.py [--fields NAME,...] RUN_DIR...  (exit 1 on failure)"""
 import json
 import pathlib
 import sys
@@ -12,6 +14,9 @@ import numpy as np
 
 ATTRIBUTES = {"velocity": 3, "speed": 1, "sxx": 1, "syy": 1, "szz": 1, "sxy": 1, "p": 1, "q": 1,
               "plastic_strain": 1, "density": 1, "layer": 1}
+# [output] fields names -> datasets ("stress" is the four components).
+FIELD_DATASETS = {name: [name] for name in ATTRIBUTES if name not in ("sxx", "syy", "szz", "sxy")}
+FIELD_DATASETS["stress"] = ["sxx", "syy", "szz", "sxy"]
 SUMMARY_FIELDS = {"model": str, "integrator": str, "particles": int, "boundary_particles": int,
                   "steps": int, "threads": int, "end_time": float, "wall_seconds": float,
                   "particle_steps_per_second": float,
@@ -42,7 +47,7 @@ def check_data_item(item, h5, where):
     return data
 
 
-def check_run(run):
+def check_run(run, attributes):
     h5 = h5py.File(run / "frames.h5", "r")
     root = ET.parse(run / "frames.xdmf").getroot()  # raises on malformed XML
     expect(root.tag == "Xdmf", "root element is not Xdmf")
@@ -75,12 +80,18 @@ def check_run(run):
             data = check_data_item(attribute.find("DataItem"), h5, name)
             if data is not None:
                 expect(data.shape[0] == n, f"{where}: {data.shape[0]} values for {n} points")
-        for field, components in ATTRIBUTES.items():
+        for field, components in attributes.items():
             kind = "Vector" if components == 3 else "Scalar"
             expect(found.get(field) == kind, f"{name}: attribute {field} missing or not {kind}")
-        velocity, speed = h5[name]["velocity"][()], h5[name]["speed"][()]
-        expect(np.allclose(np.hypot(velocity[:, 0], velocity[:, 1]), speed, rtol=1e-14, atol=0),
-               f"{name}: speed != |velocity|")
+        expect(set(found) == set(attributes),
+               f"{name}: the XDMF lists {sorted(found)}, expected {sorted(attributes)}")
+        datasets = set(h5[name])
+        expect(datasets == set(attributes) | {"position"},
+               f"{name}: frames.h5 holds {sorted(datasets)}, expected position and {sorted(attributes)}")
+        if "velocity" in datasets and "speed" in datasets:
+            velocity, speed = h5[name]["velocity"][()], h5[name]["speed"][()]
+            expect(np.allclose(np.hypot(velocity[:, 0], velocity[:, 1]), speed, rtol=1e-14, atol=0),
+                   f"{name}: speed != |velocity|")
     expect(all(b > a for a, b in zip(times, times[1:])), "frame times do not increase")
     conventions = h5.attrs["conventions"]
     conventions = conventions.decode() if isinstance(conventions, bytes) else conventions
@@ -94,10 +105,19 @@ def check_run(run):
                f"summary.json: {field} = {value!r} is not {kind.__name__}")
 
 
-for directory in sys.argv[1:]:
+arguments = sys.argv[1:]
+selected = ATTRIBUTES
+if arguments[:1] == ["--fields"]:
+    names = [name for name in arguments[1].split(",") if name]
+    unknown = [name for name in names if name not in FIELD_DATASETS]
+    if unknown:
+        sys.exit(f"check_files.py: unknown field names {unknown} (allowed: {', '.join(FIELD_DATASETS)})")
+    selected = {d: ATTRIBUTES[d] for name in names for d in FIELD_DATASETS[name]}
+    arguments = arguments[2:]
+for directory in arguments:
     before = len(failures)
-    check_run(pathlib.Path(directory))
+    check_run(pathlib.Path(directory), selected)
     print(f"{directory}: {'ok' if len(failures) == before else 'FAILED'}")
 for failure in failures:
     print("FAIL:", failure)
-sys.exit(1 if failures or len(sys.argv) < 2 else 0)
+sys.exit(1 if failures or not arguments else 0)

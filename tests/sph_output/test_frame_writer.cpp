@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -59,6 +60,23 @@ hsize_t link_count(hid_t file) {
   H5G_info_t info;
   REQUIRE(H5Gget_info(file, &info) >= 0);
   return info.nlinks;
+}
+
+/// The names of the links in group `path`.
+std::set<std::string> group_members(hid_t file, const std::string& path) {
+  const hid_t group = H5Gopen2(file, path.c_str(), H5P_DEFAULT);
+  REQUIRE(group >= 0);
+  H5G_info_t info;
+  REQUIRE(H5Gget_info(group, &info) >= 0);
+  std::set<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    char name[256] = {};
+    REQUIRE(H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT) >
+            0);
+    names.insert(name);
+  }
+  H5Gclose(group);
+  return names;
 }
 
 std::string read_text(const std::filesystem::path& path) {
@@ -184,6 +202,105 @@ TEST_CASE("a frame whose fields differ in length is rejected", "[frame_writer]")
   CHECK_THROWS_AS(writer.write(frame), std::invalid_argument);
   CHECK(writer.frames() == 0);
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("only the selected fields are written to frames.h5 and listed in frames.xdmf", "[frame_writer]") {
+  using Names = std::set<std::string>;
+  struct Case {
+    FieldSet fields;
+    Names datasets;  ///< besides position
+  };
+  const Names all{"velocity", "speed",          "sxx",     "syy",  "szz", "sxy", "p",
+                  "q",        "plastic_strain", "density", "layer"};
+  const std::vector<Case> cases{
+      {FieldSet::all(), all},
+      {FieldSet().insert(Field::p).insert(Field::q), {"p", "q"}},
+      {FieldSet().insert(Field::stress).insert(Field::layer), {"sxx", "syy", "szz", "sxy", "layer"}},
+      {FieldSet().insert(Field::speed).insert(Field::plastic_strain).insert(Field::density),
+       {"speed", "plastic_strain", "density"}},
+      {FieldSet().insert(Field::velocity), {"velocity"}},
+      {FieldSet(), {}},
+  };
+  const std::regex attribute(
+      R"re(<Attribute Name="(\w+)"[^>]*>\s*<DataItem Dimensions="(\d+)( 3)?"[^>]*>frames\.h5:(/[\w/]+)</DataItem>)re");
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const Case& test = cases[c];
+    INFO("case " << c);
+    const auto dir = fresh_directory("fields_" + std::to_string(c));
+    const SyntheticParticles a(4, 0.0), b(6, 0.25);
+    FrameWriter writer(dir, test.fields);
+    CHECK(writer.fields() == test.fields);
+    // The spans of unselected fields are not read: a frame may leave them empty.
+    Frame sparse = b.frame();
+    if (!test.fields.contains(Field::stress)) sparse.sxx = sparse.syy = sparse.szz = sparse.sxy = {};
+    if (!test.fields.contains(Field::p)) sparse.p = {};
+    if (!test.fields.contains(Field::q)) sparse.q = {};
+    if (!test.fields.contains(Field::plastic_strain)) sparse.plastic_strain = {};
+    if (!test.fields.contains(Field::density)) sparse.density = {};
+    if (!test.fields.contains(Field::layer)) sparse.layer = {};
+    if (!test.fields.contains(Field::velocity) && !test.fields.contains(Field::speed))
+      sparse.vx = sparse.vy = {};
+    writer.write(a.frame());
+    writer.write(sparse);
+
+    const H5File file(dir / "frames.h5");
+    Names expected = test.datasets;
+    expected.insert("position");
+    CHECK(group_members(file.id, "/frame_000000") == expected);
+    CHECK(group_members(file.id, "/frame_000001") == expected);
+    std::vector<hsize_t> dims;
+    if (test.fields.contains(Field::p))
+      CHECK(read_dataset<double>(file.id, "/frame_000001/p", H5T_NATIVE_DOUBLE, dims) == b.p);
+    if (test.fields.contains(Field::layer))
+      CHECK(read_dataset<int>(file.id, "/frame_000001/layer", H5T_NATIVE_INT, dims) == b.layer);
+    if (test.fields.contains(Field::speed)) {
+      const auto speed = read_dataset<double>(file.id, "/frame_000001/speed", H5T_NATIVE_DOUBLE, dims);
+      for (std::size_t i = 0; i < speed.size(); ++i) CHECK(speed[i] == Approx(std::hypot(b.vx[i], b.vy[i])));
+    }
+
+    // The index lists exactly the selected datasets of each frame, each pointing at its own dataset.
+    const std::string xdmf = read_text(writer.xdmf_path());
+    std::vector<Names> listed(2);
+    for (auto it = std::sregex_iterator(xdmf.begin(), xdmf.end(), attribute); it != std::sregex_iterator();
+         ++it) {
+      const std::string name = (*it)[1], path = (*it)[4];
+      const int frame = path.rfind("/frame_000000/", 0) == 0 ? 0 : 1;
+      CHECK(path == "/frame_00000" + std::to_string(frame) + "/" + name);
+      CHECK(std::stoull((*it)[2]) == (frame == 0 ? 4u : 6u));
+      listed[static_cast<std::size_t>(frame)].insert(name);
+    }
+    CHECK(listed[0] == test.datasets);
+    CHECK(listed[1] == test.datasets);
+    CHECK(xdmf.find("frames.h5:/frame_000001/position") != std::string::npos);  // geometry always
+    std::filesystem::remove_all(dir);
+  }
+}
+
+TEST_CASE("a frame missing a selected field is rejected", "[frame_writer]") {
+  const auto dir = fresh_directory("missing_field");
+  SyntheticParticles s(6, 0.0);
+  Frame frame = s.frame();
+  frame.density = {};
+  FrameWriter writer(dir, FieldSet().insert(Field::density));
+  CHECK_THROWS_AS(writer.write(frame), std::invalid_argument);
+  frame = s.frame();
+  frame.vy = frame.vy.first(2);
+  FrameWriter speed_only(fresh_directory("missing_velocity"), FieldSet().insert(Field::speed));
+  CHECK_THROWS_AS(speed_only.write(frame), std::invalid_argument);
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(fresh_directory("missing_velocity"));
+}
+
+TEST_CASE("the field names are the dataset names", "[frame_writer]") {
+  for (std::size_t i = 0; i < kFieldNames.size(); ++i) {
+    const auto field = field_named(kFieldNames[i]);
+    REQUIRE(field.has_value());
+    CHECK(static_cast<std::size_t>(*field) == i);
+    CHECK(FieldSet::all().contains(*field));
+    CHECK_FALSE(FieldSet().contains(*field));
+  }
+  CHECK_FALSE(field_named("sxx").has_value());  // the stress components come as one field, "stress"
+  CHECK_FALSE(field_named("").has_value());
 }
 
 TEST_CASE("frames written before a crash survive it", "[frame_writer]") {
