@@ -11,6 +11,12 @@ std::string format_number(double x) {
   out << x;
   return out.str();
 }
+/// "a", "b", "c": the allowed names in messages.
+std::string quoted_list(std::span<const std::string_view> names) {
+  std::string list;
+  for (std::string_view name : names) list += (list.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+  return list;
+}
 }  // namespace
 
 bool Range::contains(double x) const {
@@ -93,8 +99,7 @@ bool TableReader::boolean_or(std::string_view key, bool fallback) const {
 }
 
 std::string TableReader::choice(std::string_view key, std::span<const std::string_view> allowed) const {
-  std::string options;
-  for (std::string_view a : allowed) options += (options.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+  const std::string options = quoted_list(allowed);
   const toml::node* node = find(key);
   if (!node) fail(key, "is missing (allowed: " + options + ")");
   const std::optional<std::string> value = node->value_exact<std::string>();
@@ -115,8 +120,7 @@ std::string TableReader::choice_or(std::string_view key, std::string_view fallba
 std::vector<std::string> TableReader::choices_or(std::string_view key,
                                                  std::span<const std::string_view> fallback,
                                                  std::span<const std::string_view> allowed) const {
-  std::string options;
-  for (std::string_view a : allowed) options += (options.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+  const std::string options = quoted_list(allowed);
   const toml::node* node = find(key);
   if (!node) return {fallback.begin(), fallback.end()};
   const toml::array* array = node->as_array();
