@@ -1,6 +1,8 @@
 // FrameWriter: HDF5 1.10 C API frames and the XDMF index that points into them.
 #include "sph/output/frame_writer.h"
 
+#include "sph/output/atomic_file.h"
+
 #include <hdf5.h>
 
 #include <array>
@@ -9,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -239,52 +242,43 @@ void FrameWriter::write(const Frame& frame) {
 
 void FrameWriter::write_xdmf() const {
   const std::string h5_name = h5_path_.filename().string();
-  std::filesystem::path temporary = xdmf_path_;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary);
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-    out << "<?xml version=\"1.0\" ?>\n"
-        << "<!-- soilsph SPH frames (data in " << h5_name << "). " << kConventions << " -->\n"
-        << "<Xdmf Version=\"2.0\">\n  <Domain>\n"
-        << "    <Grid Name=\"soil\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (std::size_t index = 0; index < frames_.size(); ++index) {
-      const std::string name = frame_name(index);
-      const std::size_t n = frames_[index].particles;
-      const auto data_item = [&](const char* dataset, const char* number_type, int precision,
-                                 int components) {
-        out << "          <DataItem Dimensions=\"" << dimensions(n, components) << "\" NumberType=\""
-            << number_type << "\" Precision=\"" << precision << "\" Format=\"HDF\">" << h5_name << ":/"
-            << name << "/" << dataset << "</DataItem>\n";
-      };
-      out << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
-          << "        <Time Value=\"" << exact(frames_[index].time) << "\" />\n"
-          << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
-          << "\" NodesPerElement=\"1\">\n"
-          << "          <DataItem Dimensions=\"" << n
-          << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5_name << ":/" << vertices_name(n)
-          << "</DataItem>\n"
-          << "        </Topology>\n"
-          << "        <Geometry GeometryType=\"XYZ\">\n";
-      data_item("position", "Float", 8, 3);
-      out << "        </Geometry>\n";
-      for (const XdmfField& field : kFields) {
-        if (!fields_.contains(field.field)) continue;
-        out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << field.attribute_type
-            << "\" Center=\"Node\">\n";
-        data_item(field.name, field.number_type, field.precision, field.components);
-        out << "        </Attribute>\n";
-      }
-      out << "      </Grid>\n";
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" ?>\n"
+      << "<!-- soilsph SPH frames (data in " << h5_name << "). " << kConventions << " -->\n"
+      << "<Xdmf Version=\"2.0\">\n  <Domain>\n"
+      << "    <Grid Name=\"soil\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (std::size_t index = 0; index < frames_.size(); ++index) {
+    const std::string name = frame_name(index);
+    const std::size_t n = frames_[index].particles;
+    const auto data_item = [&](const char* dataset, const char* number_type, int precision,
+                               int components) {
+      out << "          <DataItem Dimensions=\"" << dimensions(n, components) << "\" NumberType=\""
+          << number_type << "\" Precision=\"" << precision << "\" Format=\"HDF\">" << h5_name << ":/"
+          << name << "/" << dataset << "</DataItem>\n";
+    };
+    out << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
+        << "        <Time Value=\"" << exact(frames_[index].time) << "\" />\n"
+        << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
+        << "\" NodesPerElement=\"1\">\n"
+        << "          <DataItem Dimensions=\"" << n
+        << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5_name << ":/" << vertices_name(n)
+        << "</DataItem>\n"
+        << "        </Topology>\n"
+        << "        <Geometry GeometryType=\"XYZ\">\n";
+    data_item("position", "Float", 8, 3);
+    out << "        </Geometry>\n";
+    for (const XdmfField& field : kFields) {
+      if (!fields_.contains(field.field)) continue;
+      out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << field.attribute_type
+          << "\" Center=\"Node\">\n";
+      data_item(field.name, field.number_type, field.precision, field.components);
+      out << "        </Attribute>\n";
     }
-    out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+    out << "      </Grid>\n";
   }
-  // rename() replaces the index atomically: a reader never sees a half-written file.
-  std::error_code error;
-  std::filesystem::rename(temporary, xdmf_path_, error);
-  if (error) throw std::runtime_error("cannot replace " + xdmf_path_.string() + ": " + error.message());
+  out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  // Replaced atomically: a reader (ParaView on a running simulation) never sees a half-written index.
+  replace_file(xdmf_path_, out.str());
 }
 
 }  // namespace soilsph::sph

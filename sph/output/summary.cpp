@@ -2,12 +2,12 @@
 // correct string escaping and numbers that read back exactly.
 #include "sph/output/summary.h"
 
+#include "sph/output/atomic_file.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
-#include <system_error>
 
 namespace soilsph::sph {
 namespace {
@@ -90,18 +90,7 @@ std::string summary_json(const Summary& s) {
 }
 
 void write_summary_json(const std::filesystem::path& file, const Summary& summary) {
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary);
-    out << summary_json(summary);
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, file, error);
-  if (error) throw std::runtime_error("cannot replace " + file.string() + ": " + error.message());
+  replace_file(file, summary_json(summary));
 }
 
 }  // namespace soilsph::sph
