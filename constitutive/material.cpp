@@ -31,18 +31,9 @@ Material load_material(const std::string& path) {
 }
 
 Material with_integrator(const Material& material, Integrator integrator) {
-  return std::visit(
-      [integrator](const auto& model) -> Material {
-        using Model = std::decay_t<decltype(model)>;
-        if constexpr (requires { model.integrator(); }) {
-          typename Model::Params params = model.params();
-          params.integrator = integrator;
-          return Model(params);
-        } else {
-          return model;
-        }
-      },
-      material);
+  return with_edited_params(material, [integrator](auto& params) {
+    if constexpr (requires { params.integrator; }) params.integrator = integrator;
+  });
 }
 
 std::string_view model_name(const Material& material) {

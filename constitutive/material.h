@@ -31,6 +31,20 @@ Material load_material(const std::string& path);
 /// update, i.e. linear elasticity, are returned unchanged).
 Material with_integrator(const Material& material, Integrator integrator);
 
+/// A copy of `material` rebuilt from its parameters after `edit(params)` (called with the chosen
+/// model's Params; use `if constexpr (requires { params.field; })` for fields some models lack).
+template <class Edit>
+Material with_edited_params(const Material& material, Edit edit) {
+  return std::visit(
+      [&edit](const auto& model) -> Material {
+        using Model = std::decay_t<decltype(model)>;
+        typename Model::Params params = model.params();
+        edit(params);
+        return Model(params);
+      },
+      material);
+}
+
 std::string_view model_name(const Material& material);
 double density(const Material& material);
 

@@ -30,18 +30,9 @@ double path_error(const PointCurve& curve, const PointCurve& reference, Field fi
 
 /// A copy of `material` with another `substep_tolerance`.
 Material with_substep_tolerance(const Material& material, double tolerance) {
-  return std::visit(
-      [tolerance](const auto& model) -> Material {
-        using Model = std::decay_t<decltype(model)>;
-        if constexpr (requires { model.substep_tolerance(); }) {
-          typename Model::Params params = model.params();
-          params.substep_tolerance = tolerance;
-          return Model(params);
-        } else {
-          return model;
-        }
-      },
-      material);
+  return with_edited_params(material, [tolerance](auto& params) {
+    if constexpr (requires { params.substep_tolerance; }) params.substep_tolerance = tolerance;
+  });
 }
 
 struct Variant {
