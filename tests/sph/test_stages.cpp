@@ -146,3 +146,22 @@ TEST_CASE("a rigid rotation turns the stress with the body (eq 23 spin, Jaumann 
     CHECK(p.sxy[i] == Approx(-S * std::cos(theta) * std::sin(theta)).epsilon(1e-9));
   }
 }
+
+namespace {
+/// A model whose update fails for one particle's state (marked by pc), as a scheme's IntegrationError.
+struct FailingModel {
+  State update(const State& state, const Mat3&, const Mat3&) const {
+    if (state.pc == 13.0) throw IntegrationError("no convergence");
+    return state;
+  }
+};
+}  // namespace
+
+TEST_CASE("a failed stress update is an error naming the particle, not a crash in the parallel loop",
+          "[sph][stress]") {
+  Particles p = test::lattice(6, 1.0e-3, 2000.0);
+  p.state[17].pc = 13.0;
+  CHECK_THROWS_AS(update_stress(FailingModel{}, p, 1e-5), IntegrationError);
+  CHECK_THROWS_WITH(update_stress(FailingModel{}, p, 1e-5),
+                    Catch::Matchers::Contains("soil particle 17: no convergence"));
+}
