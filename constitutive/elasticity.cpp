@@ -22,24 +22,47 @@ Elasticity Elasticity::pressure_dependent(double swelling_index, double initial_
   return e;
 }
 
-double Elasticity::pressure_after(double p, double d_eps_v) const {
-  if (kind_ == Kind::Constant) return p + constant_.K * d_eps_v;
-  // dp/dε_v = max(p, p_f)/κ*: exponential above the floor, linear (slope p_f/κ*) below it.
+double Elasticity::pressure_change(double p, double d_eps_v) const {
+  if (kind_ == Kind::Constant) return constant_.K * d_eps_v;
+  // dp/dε_v = max(p, p_f)/κ*: exponential above the floor, linear (slope p_f/κ*) below it. Each
+  // piece is a change, not a difference of pressures, so a small increment keeps its digits.
+  const double linear_slope = p_floor_ / kappa_star_;
   if (p >= p_floor_) {
     const double to_floor = kappa_star_ * std::log(p_floor_ / p);  // ≤ 0: strain that brings p to p_f
-    if (d_eps_v >= to_floor) return p * std::exp(d_eps_v / kappa_star_);
-    return p_floor_ + p_floor_ / kappa_star_ * (d_eps_v - to_floor);
+    if (d_eps_v >= to_floor) return p * std::expm1(d_eps_v / kappa_star_);
+    return (p_floor_ - p) + linear_slope * (d_eps_v - to_floor);
   }
-  const double to_floor = kappa_star_ * (p_floor_ - p) / p_floor_;  // > 0
-  if (d_eps_v <= to_floor) return p + p_floor_ / kappa_star_ * d_eps_v;
-  return p_floor_ * std::exp((d_eps_v - to_floor) / kappa_star_);
+  const double to_floor = (p_floor_ - p) / linear_slope;  // > 0
+  if (d_eps_v <= to_floor) return linear_slope * d_eps_v;
+  return (p_floor_ - p) + p_floor_ * std::expm1((d_eps_v - to_floor) / kappa_star_);
 }
 
+namespace {
+/// Below this |x| = |dεv|/κ*, a series replaces the difference that cancels.
+constexpr double kSeriesLimit = 1e-3;
+}  // namespace
+
 Moduli Elasticity::secant(double p, double d_eps_v) const {
-  if (kind_ == Kind::Constant) return constant_;
-  if (std::abs(d_eps_v) < 1e-14) return at(p);
-  const double K = (pressure_after(p, d_eps_v) - p) / d_eps_v;
+  if (kind_ == Kind::Constant || d_eps_v == 0.0) return at(p);
+  const double K = pressure_change(p, d_eps_v) / d_eps_v;
   return {K, shear_from_bulk(K)};
+}
+
+Moduli Elasticity::secant_slope(double p, double d_eps_v) const {
+  if (kind_ == Kind::Constant) return {0.0, 0.0};
+  const double end = pressure_after(p, d_eps_v);
+  double dK = 0.0;
+  if (p >= p_floor_ && end >= p_floor_) {
+    // K_sec = (p/κ*) φ(x), φ = expm1(x)/x, x = dεv/κ*; φ' = (x eˣ − expm1 x)/x² = 1/2 + x/3 + x²/8 + …
+    const double x = d_eps_v / kappa_star_;
+    const double dphi = std::abs(x) < kSeriesLimit ? 0.5 + x * (1.0 / 3.0 + x * (1.0 / 8.0 + x / 30.0))
+                                                   : (x * std::exp(x) - std::expm1(x)) / (x * x);
+    dK = p / (kappa_star_ * kappa_star_) * dphi;
+  } else if ((p < p_floor_) != (end < p_floor_)) {
+    // Crossing the floor: dK_sec/dεv = (K_t(end) − K_sec)/dεv, ≥ 0 as K_t is non-decreasing in p.
+    dK = std::max((at(end).K - secant(p, d_eps_v).K) / d_eps_v, 0.0);
+  }  // below the floor throughout: K_sec = p_f/κ*, a constant
+  return {dK, shear_from_bulk(dK)};
 }
 
 }  // namespace soilsph

@@ -44,7 +44,9 @@ class Elasticity {
 
   /// Mean pressure after an elastic volumetric strain dεv (compression-positive) from p, integrating
   /// dp/dε_v = K(p) exactly (exponential above the floor, linear below it).
-  double pressure_after(double p, double d_eps_v) const;
+  double pressure_after(double p, double d_eps_v) const { return p + pressure_change(p, d_eps_v); }
+  /// pressure_after(p, dεv) − p, computed without cancellation.
+  double pressure_change(double p, double d_eps_v) const;
 
   /// dK/dp and dG/dp of the tangent moduli at(p): zero for constant elasticity and below the floor.
   Moduli slope_at(double p) const {
@@ -55,6 +57,9 @@ class Elasticity {
   /// Secant moduli over an elastic volumetric strain dεv from p: K = Δp/Δε_v (the tangent for
   /// Δε_v → 0), G from K and ν. Equal to at(p) for constant elasticity.
   Moduli secant(double p, double d_eps_v) const;
+  /// d/d(dεv) of secant(p, dεv): what an implicit return needs when the shear modulus is the secant
+  /// one over the elastic part of its increment.
+  Moduli secant_slope(double p, double d_eps_v) const;
 
  private:
   double shear_from_bulk(double K) const { return 1.5 * K * (1.0 - 2.0 * nu_) / (1.0 + nu_); }

@@ -64,3 +64,28 @@ TEST_CASE("pressure-dependent elasticity integrates the swelling line exactly", 
     CHECK(e.pressure_after(p, -(to_floor + linear)) == Approx(10e3).epsilon(1e-12));
   }
 }
+
+TEST_CASE("secant moduli keep their digits for tiny increments and their slope is their derivative",
+          "[elasticity]") {
+  const double kappa = 0.019, e0 = 0.68, nu = 0.3, floor = 1e3;
+  const double kappa_star = kappa / (1 + e0);
+  const Elasticity e = Elasticity::pressure_dependent(kappa, e0, nu, floor);
+  SECTION("a 1e-13 volume change: the secant to round-off") {
+    // Differences of pressures would keep only ~3 to 5 digits here (Δp ≈ 1e-8 Pa against p ≈ 1 Pa).
+    CHECK(e.secant(1.0, 1e-13).K == Approx(floor / kappa_star).epsilon(1e-14));  // below the floor: linear
+    // Above: K_sec = (p/κ*)(eˣ − 1)/x = (p/κ*)(1 + x/2 + O(x²)), x = dεv/κ*.
+    const double x = -1e-13 / kappa_star;
+    CHECK(e.secant(100e3, -1e-13).K == Approx(100e3 / kappa_star * (1 + x / 2)).epsilon(1e-14));
+  }
+  SECTION("secant_slope matches central differences of secant") {
+    // Above the floor (series and closed-form branches), crossing it both ways, below it.
+    for (auto [p, d_eps_v] : {std::pair{100e3, 1e-6}, {100e3, -2e-2}, {100e3, 5e-2}, {1.5e3, -2e-2},
+                              {800.0, 3e-2}, {500.0, 1e-3}}) {
+      const double h = 1e-6 * kappa_star;
+      const double numeric = (e.secant(p, d_eps_v + h).K - e.secant(p, d_eps_v - h).K) / (2 * h);
+      INFO("p " << p << ", dεv " << d_eps_v);
+      CHECK(e.secant_slope(p, d_eps_v).K == Approx(numeric).epsilon(1e-6).margin(1e-6 * floor / kappa_star));
+      CHECK(e.secant_slope(p, d_eps_v).G == Approx(e.secant_slope(p, d_eps_v).K * 3 * (1 - 2 * nu) / (2 * (1 + nu))));
+    }
+  }
+}
