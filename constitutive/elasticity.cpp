@@ -8,12 +8,13 @@ Elasticity Elasticity::constant(double young_modulus, double poisson_ratio) {
   Elasticity e;
   e.kind_ = Kind::Constant;
   e.nu_ = poisson_ratio;
-  e.constant_ = {young_modulus / (3.0 * (1.0 - 2.0 * poisson_ratio)), young_modulus / (2.0 * (1.0 + poisson_ratio))};
+  e.constant_ = {young_modulus / (3.0 * (1.0 - 2.0 * poisson_ratio)),
+                 young_modulus / (2.0 * (1.0 + poisson_ratio))};
   return e;
 }
 
-Elasticity Elasticity::pressure_dependent(double swelling_index, double initial_void_ratio, double poisson_ratio,
-                                          double pressure_floor) {
+Elasticity Elasticity::pressure_dependent(double swelling_index, double initial_void_ratio,
+                                          double poisson_ratio, double pressure_floor) {
   Elasticity e;
   e.kind_ = Kind::PressureDependent;
   e.nu_ = poisson_ratio;

@@ -13,13 +13,111 @@ constexpr double kYieldTolerance = 1e-13;     ///< |f| / (M p_c)² at convergenc
 constexpr double kRelativeStep = 1e-15;       ///< bracket width relative to the root at convergence
 constexpr double kAbsoluteVolume = 1e-20;     ///< plastic volume below which v is converged absolutely
 constexpr double kResidualTolerance = 1e-14;  ///< |r1| relative to its terms at convergence
-const double kSqrt3Over2 = std::sqrt(1.5);
 
-/// The return-mapping equations of one increment, evaluated at (v, Δλ).
+/// Where the elastic path σ_e(t) = σ_n + D_sec(tΔε):tΔε of an increment meets the yield surface, and
+/// how that point moves with Δε: the flow of the increment starts there. t = 0 (the start itself)
+/// unless the start is strictly inside.
+struct YieldEntry {
+  double t = 0.0;              ///< elastic fraction of the increment
+  double p = 0.0;              ///< p_e(t)
+  Mat3 s = Mat3::Zero();       ///< s_e(t) = s_n + 2 G_e(t) t Δe, G_e(t) = G_sec(p_n, tΔε_v)
+  Mat3 grad_p = Mat3::Zero();  ///< dp_e(t*(Δε), Δε)/dΔε
+  // ds_e/dΔε = 2t Δe ⊗ grad_G + 2 G t 𝕀_dev + ds_dt ⊗ grad_t:
+  double G = 0.0;              ///< G_e(t)
+  Mat3 grad_G = Mat3::Zero();  ///< ∂G_e/∂Δε at fixed t
+  Mat3 ds_dt = Mat3::Zero();   ///< ∂s_e/∂t
+  Mat3 grad_t = Mat3::Zero();  ///< dt*/dΔε
+
+  /// The entry of an increment that starts on the surface: the start itself, fixed.
+  static YieldEntry at(const State& start) {
+    YieldEntry entry;
+    entry.p = mean_pressure(start.stress), entry.s = deviator(start.stress);
+    return entry;
+  }
+  /// X : ds_e/dΔε, a stress-like tensor.
+  Mat3 contract_ds(const Mat3& X, const Mat3& d_e) const {
+    return 2.0 * t * ddot(X, d_e) * grad_G + 2.0 * G * t * deviator(X) + ddot(X, ds_dt) * grad_t;
+  }
+  /// ds_e/dΔε as a Voigt matrix.
+  Mat6 ds(const Mat3& d_e) const {
+    return 2.0 * t * voigt_outer(d_e, grad_G) + 2.0 * G * t * voigt_deviatoric_projector() +
+           voigt_outer(ds_dt, grad_t);
+  }
+};
+
+/// The entry point of a plastic increment: F(t) = f(σ_e(t), p_c,n) = 0 on (0, 1) with F(0) < 0 < F(1),
+/// by safeguarded Newton with the exact F'(t); t* then moves with Δε as dt* = −∂F/∂Δε / F'(t*).
+YieldEntry yield_entry(const ModifiedCamClay& model, const State& start, const Mat3& d_eps) {
+  const Elasticity& elasticity = model.elasticity();
+  const double M2 = model.M() * model.M(), pc = start.pc;
+  const double p_n = mean_pressure(start.stress), d_eps_v = -d_eps.trace();
+  const Mat3 s_n = deviator(start.stress), d_e = deviator(d_eps);
+  const double S0 = ddot(s_n, s_n), S1 = ddot(s_n, d_e), S2 = ddot(d_e, d_e);
+  YieldEntry entry = YieldEntry::at(start);
+  const double f_start = M2 * p_n * (p_n - pc) + 1.5 * S0;
+  if (!(f_start < -kYieldTolerance * M2 * pc * pc)) return entry;  // on (or beyond) the surface
+
+  struct Value {
+    double F, dF_dt, p, K, G, dG;  ///< F, F'(t), p_e, K_t(p_e), G_e, dG_sec/dε at tΔε_v
+  };
+  auto value = [&](double t) {
+    Value v{};
+    v.p = elasticity.pressure_after(p_n, t * d_eps_v);
+    v.K = elasticity.at(v.p).K;
+    v.G = elasticity.secant(p_n, t * d_eps_v).G;
+    v.dG = elasticity.secant_slope(p_n, t * d_eps_v).G;
+    const double Gt = v.G * t, dGt_dt = v.G + t * v.dG * d_eps_v;
+    v.F = M2 * v.p * (v.p - pc) + 1.5 * (S0 + 4.0 * Gt * S1 + 4.0 * Gt * Gt * S2);
+    v.dF_dt = M2 * (2.0 * v.p - pc) * v.K * d_eps_v + 1.5 * (4.0 * S1 + 8.0 * Gt * S2) * dGt_dt;
+    return v;
+  };
+  double lo = 0.0, hi = 1.0, t = 0.5;
+  Value v = value(t);
+  for (int it = 0; it < kMaxIterations; ++it) {
+    if (std::abs(v.F) <= kYieldTolerance * M2 * (v.p * v.p + pc * pc)) break;
+    (v.F < 0.0 ? lo : hi) = t;
+    double next = t - v.F / v.dF_dt;
+    if (!std::isfinite(next) || next <= lo || next >= hi) next = 0.5 * (lo + hi);
+    if (hi - lo <= kRelativeStep) break;
+    t = next;
+    v = value(t);
+  }
+  entry.t = t, entry.p = v.p, entry.G = v.G;
+  entry.s = s_n + 2.0 * v.G * t * d_e;
+  // Partial derivatives at fixed t, then through t*(Δε).
+  const Mat3& I = identity3();
+  const Mat3 grad_p_fixed_t = -v.K * t * I;  // dΔε_v = −I : dΔε
+  entry.grad_G = -v.dG * t * I;
+  entry.ds_dt = 2.0 * (v.G + t * v.dG * d_eps_v) * d_e;
+  const double dF_dp = M2 * (2.0 * v.p - pc);
+  const Mat3 dF_ds = 3.0 * entry.s;
+  const Mat3 grad_F =
+      dF_dp * grad_p_fixed_t + 2.0 * t * ddot(dF_ds, d_e) * entry.grad_G + 2.0 * v.G * t * deviator(dF_ds);
+  entry.grad_t = -grad_F / v.dF_dt;
+  entry.grad_p = grad_p_fixed_t + v.K * d_eps_v * entry.grad_t;
+  return entry;
+}
+
+/// The return-mapping equations of one increment, evaluated at (v, Δλ), for the generalised
+/// midpoint rule with a stiffness limiter. The flow integral over the increment is
+///   Δε^p = w_t n_g(σ_t, p_c,n) + w_e n_g(σ_{n+1}, p_c),  w_t + w_e = Δλ,
+/// where σ_t is the increment's entry to the yield surface (the start when that is on it):
+///   w_t = min((1−α)Δλ, 1/(6G)),  w_e = Δλ − w_t.
+/// Without the cap this is the generalised midpoint rule (Ortiz & Popov 1985), second order for
+/// α = ½; s = a/B with a = s_n + 2GΔe − 6G w_t s_t and B = 1 + 6G w_e. For an entry at the start
+/// the factor of s_n in a, 1 − 6G w_t, is the trapezoidal rule's amplification 1 − z/2 of the stiff
+/// shear mode (z = 6GΔλ). Past z = 2 it turns negative: the uncapped rule then has several roots
+/// and its return jumps between them as Δε changes (the mixed-control driver's Newton cycled at
+/// OCR 30 with 4–10 increments). The cap keeps that factor ≥ 0, is continuous in Δε, and tends to
+/// backward Euler as z → ∞; below the cap nothing changes.
+/// Volumetric part: r1 = v − M²[w_t (2p_t − p_c,n) + w_e (2p − p_c)].
 class CamClayReturn {
  public:
-  CamClayReturn(const ModifiedCamClay& model, const State& start, const Mat3& d_eps)
+  CamClayReturn(const ModifiedCamClay& model, const State& start, const Mat3& d_eps, double alpha,
+                const YieldEntry& entry)
       : model_(model),
+        entry_(entry),
+        alpha_(alpha),
         M2_(model.M() * model.M()),
         theta_(model.hardening_exponent()),
         p_n_(mean_pressure(start.stress)),
@@ -29,39 +127,79 @@ class CamClayReturn {
         d_e_(deviator(d_eps)),
         S0_(ddot(s_n_, s_n_)),
         S1_(ddot(s_n_, d_e_)),
-        S2_(ddot(d_e_, d_e_)) {}
+        S2_(ddot(d_e_, d_e_)),
+        T0_(ddot(entry.s, s_n_)),
+        T1_(ddot(entry.s, d_e_)),
+        T2_(ddot(entry.s, entry.s)),
+        entry_flow_p_(2.0 * entry.p - pc_n_) {}
 
   /// Everything that depends on (v, Δλ).
   struct Point {
-    double v, l;       ///< unknowns
-    double p, pc;      ///< mean pressure and p_c
-    double Kt, G, dG;  ///< tangent bulk and shear moduli at p, dG/dp
-    double A2, B, q2;  ///< ‖s_n + 2GΔe‖², 1 + 6GΔλ, q²
-    double f;          ///< yield function (Pa²)
+    double v, l;              ///< unknowns
+    double p, pc;             ///< mean pressure and p_c
+    double Kt, G, dG;         ///< tangent bulk modulus at p, secant shear modulus, dG/dp
+    double wt, wt_l, wt_G;    ///< the entry's flow weight w_t and its partials ∂/∂Δλ, ∂/∂G
+    double kG, B;             ///< 6G w_t (the weight of s_t in a) and B = 1 + 6G w_e
+    double a_sn, a_de, a_st;  ///< a : s_n, a : Δe, a : s_t
+    double A2, q2;            ///< a : a, q² = 1.5 a:a/B²
+    double f;                 ///< yield function (Pa²)
+    double we() const { return l - wt; }
+    // Partials of kG and B with respect to G and Δλ (w_e = Δλ − w_t).
+    double kG_G() const { return 6.0 * (wt + G * wt_G); }
+    double kG_l() const { return 6.0 * G * wt_l; }
+    double B_G() const { return 6.0 * (we() - G * wt_G); }
+    double B_l() const { return 6.0 * G * (1.0 - wt_l); }
   };
 
   Point at(double v, double l) const {
     Point x{};
     x.v = v, x.l = l;
-    x.p = model_.elasticity().pressure_after(p_n_, d_eps_v_ - v);
+    const Elasticity& elasticity = model_.elasticity();
+    const double elastic_volume = d_eps_v_ - v;
+    x.p = elasticity.pressure_after(p_n_, elastic_volume);
     x.pc = pc_n_ * std::exp(theta_ * v);
-    const Moduli D = model_.elasticity().at(x.p);
-    x.Kt = D.K, x.G = D.G, x.dG = model_.elasticity().slope_at(x.p).G;
-    x.A2 = S0_ + 4.0 * x.G * S1_ + 4.0 * x.G * x.G * S2_;
-    x.B = 1.0 + 6.0 * x.G * l;
+    x.Kt = elasticity.at(x.p).K;
+    x.G = elasticity.secant(p_n_, elastic_volume).G;
+    // G and p are both functions of the elastic volume alone, so dG/dp = (dG/dε_v^e)/K_t.
+    x.dG = elasticity.secant_slope(p_n_, elastic_volume).G / x.Kt;
+    const double cap = 1.0 / (6.0 * x.G);
+    if ((1.0 - alpha_) * l <= cap) {
+      x.wt = (1.0 - alpha_) * l, x.wt_l = 1.0 - alpha_, x.wt_G = 0.0;
+    } else {
+      x.wt = cap, x.wt_l = 0.0, x.wt_G = -cap / x.G;
+    }
+    x.kG = 6.0 * x.G * x.wt;
+    x.B = 1.0 + 6.0 * x.G * x.we();
+    x.a_sn = S0_ + 2.0 * x.G * S1_ - x.kG * T0_;
+    x.a_de = S1_ + 2.0 * x.G * S2_ - x.kG * T1_;
+    x.a_st = T0_ + 2.0 * x.G * T1_ - x.kG * T2_;
+    x.A2 = x.a_sn + 2.0 * x.G * x.a_de - x.kG * x.a_st;
     x.q2 = 1.5 * x.A2 / (x.B * x.B);
     x.f = M2_ * x.p * (x.p - x.pc) + x.q2;
     return x;
   }
-  /// r1 = v − Δλ M²(2p − p_c) and its derivatives.
-  double r1(const Point& x) const { return x.v - x.l * M2_ * (2.0 * x.p - x.pc); }
-  double r1_v(const Point& x) const { return 1.0 + x.l * M2_ * (2.0 * x.Kt + theta_ * x.pc); }
-  double r1_l(const Point& x) const { return -M2_ * (2.0 * x.p - x.pc); }
-  /// ∂(q²)/∂G and ∂(q²)/∂Δλ.
-  double q2_G(const Point& x) const {
-    return 1.5 * ((4.0 * S1_ + 8.0 * x.G * S2_) / (x.B * x.B) - 12.0 * x.l * x.A2 / (x.B * x.B * x.B));
+  /// The volumetric flow integral w_t M^-2 n_p(entry) + w_e M^-2 n_p(end), n_p = M²(2p − p_c) being
+  /// the compression-positive volumetric part of n_g.
+  double volumetric_flow(const Point& x) const { return x.wt * entry_flow_p_ + x.we() * (2.0 * x.p - x.pc); }
+  /// r1 = v − M² (volumetric flow) and its derivatives; dG/dv = −dG/dp K_t.
+  double r1(const Point& x) const { return x.v - M2_ * volumetric_flow(x); }
+  double r1_v(const Point& x) const {
+    return 1.0 + M2_ * (x.we() * (2.0 * x.Kt + theta_ * x.pc) +
+                        (entry_flow_p_ - (2.0 * x.p - x.pc)) * x.wt_G * x.dG * x.Kt);
   }
-  double q2_l(const Point& x) const { return -1.5 * 12.0 * x.G * x.A2 / (x.B * x.B * x.B); }
+  double r1_l(const Point& x) const {
+    return -M2_ * (x.wt_l * entry_flow_p_ + (1.0 - x.wt_l) * (2.0 * x.p - x.pc));
+  }
+  /// a : ∂a/∂G and a : ∂a/∂Δλ: ∂a/∂G = 2Δe − ∂(kG)/∂G s_t, ∂a/∂Δλ = −∂(kG)/∂Δλ s_t.
+  double a_dot_a_G(const Point& x) const { return 2.0 * x.a_de - x.kG_G() * x.a_st; }
+  double a_dot_a_l(const Point& x) const { return -x.kG_l() * x.a_st; }
+  /// ∂(q²)/∂G and ∂(q²)/∂Δλ of q² = 1.5 ‖a‖²/B².
+  double q2_G(const Point& x) const {
+    return 1.5 * (2.0 * a_dot_a_G(x) / (x.B * x.B) - 2.0 * x.A2 * x.B_G() / (x.B * x.B * x.B));
+  }
+  double q2_l(const Point& x) const {
+    return 1.5 * (2.0 * a_dot_a_l(x) / (x.B * x.B) - 2.0 * x.A2 * x.B_l() / (x.B * x.B * x.B));
+  }
   /// ∂f/∂v (dp/dv = −K_t, dp_c/dv = θ p_c) and ∂f/∂Δλ.
   double f_v(const Point& x) const {
     return -M2_ * ((2.0 * x.p - x.pc) * x.Kt + theta_ * x.p * x.pc) - q2_G(x) * x.dG * x.Kt;
@@ -70,11 +208,13 @@ class CamClayReturn {
   /// The size of the terms of f, for a round-off-aware convergence test.
   double yield_scale(const Point& x) const { return M2_ * (x.p * x.p + x.pc * x.pc) + x.q2; }
 
-  /// v(Δλ) solving r1 = 0: r1 is increasing in v, negative at min(0, −Δλ M² p_c,n) and positive at
-  /// max(0, 2Δλ M² p_trial) (p decreases and p_c increases with v).
+  /// v(Δλ) solving r1 = 0: r1 is negative at min(0, −Δλ M² p_c,n) and positive at
+  /// max(0, 2Δλ M² max(p_t, p_trial)) (the flow's weights are positive and sum to Δλ; p decreases
+  /// and p_c increases with v).
   Point solve_volume(double l, double v_guess) const {
     const Point trial = at(0.0, l);
-    double lo = std::min(0.0, -l * M2_ * pc_n_), hi = std::max(0.0, 2.0 * l * M2_ * trial.p);
+    double lo = std::min(0.0, -l * M2_ * pc_n_);
+    double hi = std::max(0.0, 2.0 * l * M2_ * std::max(entry_.p, trial.p));
     double v = std::clamp(v_guess, lo, hi);
     double last_step = hi - lo, step_before_last = 2.0 * (hi - lo);
     for (int it = 0; it < kMaxIterations; ++it) {
@@ -109,74 +249,85 @@ class CamClayReturn {
   /// df/dΔλ along r1 = 0: ∂f/∂Δλ + ∂f/∂v dv/dΔλ, dv/dΔλ = −r1_l/r1_v.
   double total_f_l(const Point& x) const { return f_l(x) - f_v(x) * r1_l(x) / r1_v(x); }
 
-  /// The consistent tangent at a converged point (implicit-function theorem on r1 = 0, f = 0).
+  /// The consistent tangent at a converged point (implicit-function theorem on r1 = 0, f = 0, with
+  /// the entry (p_t, s_t) moving with Δε).
   Mat6 tangent(const Point& x, bool plastic) const {
-    const double c2 = 1.5;
     const Mat3& I = identity3();
-    const Mat3 a = s_n_ + 2.0 * x.G * d_e_;
+    const Mat3 a = s_n_ + 2.0 * x.G * d_e_ - x.kG * entry_.s;
     // Partial derivatives with respect to Δε at fixed (v, Δλ), as tensors t with dφ = t : dΔε.
     const Mat3 grad_p = -x.Kt * I;
     const Mat3 grad_G = x.dG * grad_p;
     Mat3 grad_v = Mat3::Zero(), grad_l = Mat3::Zero();
     if (plastic) {
-      const Mat3 grad_r1 = -2.0 * x.l * M2_ * grad_p;
-      const Mat3 grad_q2 = c2 * 4.0 * x.G / (x.B * x.B) * a + q2_G(x) * grad_G;
+      const Mat3 grad_r1 = -M2_ * (2.0 * x.we() * grad_p + 2.0 * x.wt * entry_.grad_p +
+                                   (entry_flow_p_ - (2.0 * x.p - x.pc)) * x.wt_G * grad_G);
+      // q² through a: ∂a/∂Δe = 2G, ∂a/∂s_t = −kG; through G: q2_G.
+      const Mat3 grad_q2 = 1.5 * 4.0 * x.G / (x.B * x.B) * a + q2_G(x) * grad_G -
+                           1.5 * 2.0 * x.kG / (x.B * x.B) * entry_.contract_ds(a, d_e_);
       const Mat3 grad_f = M2_ * (2.0 * x.p - x.pc) * grad_p + grad_q2;
       const double J11 = r1_v(x), J12 = r1_l(x), J21 = f_v(x), J22 = f_l(x);
       const double det = J11 * J22 - J12 * J21;
       grad_v = -(J22 * grad_r1 - J12 * grad_f) / det;
       grad_l = -(-J21 * grad_r1 + J11 * grad_f) / det;
     }
+    // σ = −p I + a/B: da = 2Δe dG + 2G dΔe − s_t d(kG) − kG ds_t, with kG and B functions of (G, Δλ).
     const Mat3 grad_p_total = grad_p - x.Kt * grad_v;
-    // σ = −p I + a/B with a = s_n + 2GΔe, B = 1 + 6GΔλ, G = G(p).
+    const Mat3 grad_G_total = x.dG * grad_p_total;
+    const Mat3 grad_kG = x.kG_G() * grad_G_total + x.kG_l() * grad_l;
+    const Mat3 grad_B = x.B_G() * grad_G_total + x.B_l() * grad_l;
     return -voigt_outer(I, grad_p_total) +
-           (2.0 * voigt_outer(d_e_, x.dG * grad_p_total) + 2.0 * x.G * voigt_deviatoric_projector()) / x.B -
-           voigt_outer(a, 6.0 * x.l * x.dG * grad_p_total + 6.0 * x.G * grad_l) / (x.B * x.B);
+           (2.0 * voigt_outer(d_e_, grad_G_total) + 2.0 * x.G * voigt_deviatoric_projector() -
+            voigt_outer(entry_.s, grad_kG) - x.kG * entry_.ds(d_e_)) /
+               x.B -
+           voigt_outer(a, grad_B) / (x.B * x.B);
   }
 
-  Mat3 stress(const Point& x) const { return (s_n_ + 2.0 * x.G * d_e_) / x.B - x.p * identity3(); }
+  Mat3 stress(const Point& x) const {
+    return (s_n_ + 2.0 * x.G * d_e_ - x.kG * entry_.s) / x.B - x.p * identity3();
+  }
   double M2() const { return M2_; }
 
  private:
   const ModifiedCamClay& model_;
+  const YieldEntry& entry_;
+  double alpha_;
   double M2_, theta_, p_n_, pc_n_, d_eps_v_;
   Mat3 s_n_, d_e_;
-  double S0_, S1_, S2_;
+  double S0_, S1_, S2_;  ///< s_n:s_n, s_n:Δe, Δe:Δe
+  double T0_, T1_, T2_;  ///< s_t:s_n, s_t:Δe, s_t:s_t
+  double entry_flow_p_;  ///< 2p_t − p_c,n: the volumetric flow direction at the entry, over M²
 };
-}  // namespace
 
-State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
-                      Mat6* tangent) {
-  if (!(start.pc > 0.0)) throw IntegrationError("implicit (modified-cam-clay): p_c must be positive");
-  const CamClayReturn eqs(model, start, strain_increment);
-  State next = start;
-  next.plastic_multiplier = 0.0;
+/// The plastic return of an increment whose elastic trial is outside the surface.
+State plastic_return(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
+                     const YieldEntry& entry, Mat6* tangent) {
+  const CamClayReturn eqs(model, start, strain_increment, model.implicit_alpha(), entry);
   const auto trial = eqs.at(0.0, 0.0);
-  if (trial.f <= 0.0) {
-    next.stress = eqs.stress(trial);
-    if (tangent) *tangent = eqs.tangent(trial, false);
-    return next;
-  }
-
   // Outer safeguarded Newton on Δλ: f > 0 on [0, lo], f < 0 at hi once found.
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
-  double l = 0.0;
+  // A first estimate from the trial's normal, n:D:n (the scale of the multiplier).
+  const double n_p = eqs.M2() * (2.0 * trial.p - trial.pc);
+  double l = trial.f / (trial.Kt * n_p * n_p + 12.0 * trial.G * trial.q2 + 1e-300);
   auto x = trial;
-  {
-    // A first estimate from the trial's normal, n:D:n (the scale of the multiplier).
-    const double n_p = eqs.M2() * (2.0 * trial.p - trial.pc);
-    const double scale = trial.f / (trial.Kt * n_p * n_p + 12.0 * trial.G * trial.q2 + 1e-300);
-    l = scale;
-  }
-  bool converged = false;
+  bool converged = false, root_bracketed = false;
   double last_step = std::numeric_limits<double>::infinity(), step_before_last = last_step;
   for (int it = 0; it < kMaxIterations; ++it) {
     x = eqs.solve_volume(l, x.v);
-    if (std::abs(x.f) <= kYieldTolerance * eqs.yield_scale(x) || hi - lo <= kRelativeStep * l) {
+    if (std::abs(x.f) <= kYieldTolerance * eqs.yield_scale(x)) {
       converged = true;
       break;
     }
-    (x.f > 0.0 ? lo : hi) = l;
+    if (hi - lo <= kRelativeStep * l) {
+      // The root is pinned to round-off of f when a sign change was bracketed.
+      converged = root_bracketed;
+      break;
+    }
+    if (x.f > 0.0) {
+      lo = l;
+    } else {
+      hi = l;
+      root_bracketed = true;
+    }
     const double step = x.f / eqs.total_f_l(x);
     double next = l - step;
     // Bisect when Newton leaves the bracket or is slower than bisection (it can cycle where f(Δλ)
@@ -188,16 +339,38 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
     last_step = next - l;
     l = next;
   }
-  if (!converged || !std::isfinite(x.f))
+  if (!converged || !std::isfinite(x.f) || !(x.l >= 0.0))
     throw IntegrationError("implicit (modified-cam-clay): the return mapping did not converge");
 
+  State next = start;
   next.stress = eqs.stress(x);
   next.pc = x.pc;
-  const Mat3 n_g = model.flow_direction(next.stress, next.pc);
-  accumulate_plastic_strain(next, x.l * n_g);
+  const Mat3 entry_stress = entry.s - entry.p * identity3();
+  accumulate_plastic_strain(next, x.wt * model.flow_direction(entry_stress, start.pc) +
+                                      x.we() * model.flow_direction(next.stress, next.pc));
   next.plastic_multiplier = x.l;
   if (tangent) *tangent = eqs.tangent(x, true);
   return next;
+}
+}  // namespace
+
+State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
+                      Mat6* tangent) {
+  if (!(start.pc > 0.0)) throw IntegrationError("implicit (modified-cam-clay): p_c must be positive");
+  {
+    // The elastic trial (Δλ = 0: the flow weights and the entry play no part).
+    const YieldEntry start_entry = YieldEntry::at(start);
+    const CamClayReturn eqs(model, start, strain_increment, model.implicit_alpha(), start_entry);
+    const auto trial = eqs.at(0.0, 0.0);
+    if (trial.f <= 0.0) {
+      State next = start;
+      next.plastic_multiplier = 0.0;
+      next.stress = eqs.stress(trial);
+      if (tangent) *tangent = eqs.tangent(trial, false);
+      return next;
+    }
+  }
+  return plastic_return(model, start, strain_increment, yield_entry(model, start, strain_increment), tangent);
 }
 
 }  // namespace soilsph

@@ -15,7 +15,8 @@ ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
   p.compression_index = t.number("compression_index", Range::positive());
   p.swelling_index = t.number("swelling_index", Range::open(0.0, p.compression_index));
   p.initial_void_ratio = t.number("initial_void_ratio", Range::positive());
-  const std::string kind = t.choice_or("elasticity", "pressure-dependent", {"constant", "pressure-dependent"});
+  const std::string kind =
+      t.choice_or("elasticity", "pressure-dependent", {"constant", "pressure-dependent"});
   p.elasticity = kind == "constant" ? Elasticity::Kind::Constant : Elasticity::Kind::PressureDependent;
   if (p.elasticity == Elasticity::Kind::Constant) {
     p.young_modulus = t.number("young_modulus", Range::positive(), "Pa");
@@ -24,12 +25,14 @@ ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
   }
   p.integrator = read_integrator(t, kDefaultIntegrator);
   p.substep_tolerance = read_substep_tolerance(t);
+  p.implicit_alpha = t.number_or("implicit_alpha", kDefaultImplicitAlpha, Range::closed(0.5, 1.0));
   return p;
 }
 
 namespace {
 Elasticity make_elasticity(const ModifiedCamClayParams& p) {
-  if (p.elasticity == Elasticity::Kind::Constant) return Elasticity::constant(p.young_modulus, p.poisson_ratio);
+  if (p.elasticity == Elasticity::Kind::Constant)
+    return Elasticity::constant(p.young_modulus, p.poisson_ratio);
   return Elasticity::pressure_dependent(p.swelling_index, p.initial_void_ratio, p.poisson_ratio,
                                         p.elastic_pressure_floor);
 }

@@ -18,6 +18,7 @@ struct ModifiedCamClayParams {
   /// Input default: error-controlled substepping reaches a given error ≤ 1e-4 18–69× cheaper than
   /// `explicit` on the work-precision paths (docs/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Substep;
+  static constexpr double kDefaultImplicitAlpha = 0.5;
   double density;                 ///< kg/m³
   double poisson_ratio;           ///< −
   double friction_angle;          ///< φ, degrees (gives M, eq 26)
@@ -29,6 +30,9 @@ struct ModifiedCamClayParams {
   double elastic_pressure_floor;  ///< Pa, pressure-dependent elasticity only
   Integrator integrator = Integrator::Explicit;
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
+  /// `implicit`: generalised-midpoint parameter α of the flow rule, ½ (midpoint, second order) to 1
+  /// (backward Euler, first order).
+  double implicit_alpha = kDefaultImplicitAlpha;
 
   static ModifiedCamClayParams read(const TableReader& table);
 };
@@ -44,6 +48,7 @@ class ModifiedCamClay {
   const Elasticity& elasticity() const { return elasticity_; }
   Integrator integrator() const { return params_.integrator; }
   double substep_tolerance() const { return params_.substep_tolerance; }
+  double implicit_alpha() const { return params_.implicit_alpha; }
   double M() const { return M_; }
   /// (1+e0)/(λ−κ): the hardening exponent per unit plastic volumetric strain (eq 27).
   double hardening_exponent() const { return theta_; }

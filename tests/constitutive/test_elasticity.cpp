@@ -79,13 +79,18 @@ TEST_CASE("secant moduli keep their digits for tiny increments and their slope i
   }
   SECTION("secant_slope matches central differences of secant") {
     // Above the floor (series and closed-form branches), crossing it both ways, below it.
-    for (auto [p, d_eps_v] : {std::pair{100e3, 1e-6}, {100e3, -2e-2}, {100e3, 5e-2}, {1.5e3, -2e-2},
-                              {800.0, 3e-2}, {500.0, 1e-3}}) {
+    for (auto [p, d_eps_v] : {std::pair{100e3, 1e-6},
+                              {100e3, -2e-2},
+                              {100e3, 5e-2},
+                              {1.5e3, -2e-2},
+                              {800.0, 3e-2},
+                              {500.0, 1e-3}}) {
       const double h = 1e-6 * kappa_star;
       const double numeric = (e.secant(p, d_eps_v + h).K - e.secant(p, d_eps_v - h).K) / (2 * h);
       INFO("p " << p << ", dεv " << d_eps_v);
       CHECK(e.secant_slope(p, d_eps_v).K == Approx(numeric).epsilon(1e-6).margin(1e-6 * floor / kappa_star));
-      CHECK(e.secant_slope(p, d_eps_v).G == Approx(e.secant_slope(p, d_eps_v).K * 3 * (1 - 2 * nu) / (2 * (1 + nu))));
+      CHECK(e.secant_slope(p, d_eps_v).G ==
+            Approx(e.secant_slope(p, d_eps_v).K * 3 * (1 - 2 * nu) / (2 * (1 + nu))));
     }
   }
 }

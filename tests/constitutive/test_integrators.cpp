@@ -47,9 +47,16 @@ TEST_CASE("implicit consistent tangent matches central differences of the update
       CHECK(algorithmic_tangent(dp, s, extension).norm() == 0.0);
     }
   }
-  SECTION("Modified Cam-Clay, both elasticities: elastic, hardening, softening") {
-    for (auto kind : {Elasticity::Kind::Constant, Elasticity::Kind::PressureDependent}) {
-      const ModifiedCamClay mcc(with(test::table1_cam_clay_params(kind), Integrator::Implicit));
+  SECTION(
+      "Modified Cam-Clay, both elasticities, midpoint and backward Euler: elastic, hardening, softening") {
+    for (auto [kind, alpha] : {std::pair{Elasticity::Kind::Constant, 0.5},
+                               {Elasticity::Kind::Constant, 1.0},
+                               {Elasticity::Kind::PressureDependent, 0.5},
+                               {Elasticity::Kind::PressureDependent, 1.0}}) {
+      auto params = with(test::table1_cam_clay_params(kind), Integrator::Implicit);
+      params.implicit_alpha = alpha;
+      const ModifiedCamClay mcc(params);
+      INFO("alpha " << alpha);
       State nc;
       nc.stress = isotropic_stress(100e3);
       nc.pc = 100e3;
@@ -63,6 +70,16 @@ TEST_CASE("implicit consistent tangent matches central differences of the update
       check_tangent(mcc, oc, dry);  // dry side, softening
       REQUIRE(mcc.update(oc, dry, Mat3::Zero()).plastic_multiplier > 0.0);
       REQUIRE(mcc.update(oc, dry, Mat3::Zero()).pc < oc.pc);
+      if (kind == Elasticity::Kind::PressureDependent) {
+        // Far on the dry side (OCR 30, just inside the surface), a dilating step that softens p_c by
+        // a third: there the midpoint's stiffness cap 6G w_t ≤ 1 is active at the solution.
+        State peak;
+        peak.stress = Vec3(-1558477.0, -100e3, -100e3).asDiagonal();
+        peak.pc = 3e6;
+        const Mat3 dilating = diagonal(-1e-2, 3e-2, 3e-2);
+        check_tangent(mcc, peak, dilating);
+        REQUIRE(mcc.update(peak, dilating, Mat3::Zero()).pc < 0.9 * peak.pc);
+      }
     }
   }
 }
@@ -71,7 +88,8 @@ TEST_CASE("the same increment applied to the same state gives the same stress bi
   std::mt19937_64 rng(7);
   for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
     const DruckerPrager dp(with(test::table1_drucker_prager_params(1e3, 5.0), scheme));
-    const ModifiedCamClay mcc(with(test::table1_cam_clay_params(Elasticity::Kind::PressureDependent), scheme));
+    const ModifiedCamClay mcc(
+        with(test::table1_cam_clay_params(Elasticity::Kind::PressureDependent), scheme));
     State s;
     s.stress = isotropic_stress(50e3);
     s.pc = 60e3;
