@@ -49,6 +49,30 @@ Moduli Elasticity::secant(double p, double d_eps_v) const {
   return {K, shear_from_bulk(K)};
 }
 
+namespace {
+/// φ'(x) for φ(x) = expm1(x)/x: (x eˣ − expm1 x)/x² = 1/2 + x/3 + x²/8 + x³/30 + …
+double expm1_ratio_slope(double x, double em1) {
+  return std::abs(x) < kSeriesLimit ? 0.5 + x * (1.0 / 3.0 + x * (1.0 / 8.0 + x / 30.0))
+                                    : (x * (1.0 + em1) - em1) / (x * x);
+}
+}  // namespace
+
+ElasticVolumeStep Elasticity::volume_step(double p, double d_eps_v) const {
+  if (kind_ == Kind::PressureDependent && p >= p_floor_) {
+    const double x = d_eps_v / kappa_star_, em1 = std::expm1(x);
+    const double end = p + p * em1;
+    if (end >= p_floor_) {  // on the swelling line throughout
+      const double K_end = end / kappa_star_;
+      const double K_sec = x == 0.0 ? p / kappa_star_ : p / kappa_star_ * (em1 / x);
+      const double dK = p / (kappa_star_ * kappa_star_) * expm1_ratio_slope(x, em1);
+      return {
+          end, {K_end, shear_from_bulk(K_end)}, {K_sec, shear_from_bulk(K_sec)}, {dK, shear_from_bulk(dK)}};
+    }
+  }
+  const double end = pressure_after(p, d_eps_v);
+  return {end, at(end), secant(p, d_eps_v), secant_slope(p, d_eps_v)};
+}
+
 Moduli Elasticity::secant_slope(double p, double d_eps_v) const {
   if (kind_ == Kind::Constant) return {0.0, 0.0};
   const double end = pressure_after(p, d_eps_v);
@@ -56,9 +80,7 @@ Moduli Elasticity::secant_slope(double p, double d_eps_v) const {
   if (p >= p_floor_ && end >= p_floor_) {
     // K_sec = (p/κ*) φ(x), φ = expm1(x)/x, x = dεv/κ*; φ' = (x eˣ − expm1 x)/x² = 1/2 + x/3 + x²/8 + …
     const double x = d_eps_v / kappa_star_;
-    const double dphi = std::abs(x) < kSeriesLimit ? 0.5 + x * (1.0 / 3.0 + x * (1.0 / 8.0 + x / 30.0))
-                                                   : (x * std::exp(x) - std::expm1(x)) / (x * x);
-    dK = p / (kappa_star_ * kappa_star_) * dphi;
+    dK = p / (kappa_star_ * kappa_star_) * expm1_ratio_slope(x, std::expm1(x));
   } else if ((p < p_floor_) != (end < p_floor_)) {
     // Crossing the floor: dK_sec/dεv = (K_t(end) − K_sec)/dεv, ≥ 0 as K_t is non-decreasing in p.
     dK = std::max((at(end).K - secant(p, d_eps_v).K) / d_eps_v, 0.0);

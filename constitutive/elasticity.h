@@ -24,6 +24,14 @@ struct Moduli {
   }
 };
 
+/// Everything an implicit return needs about one elastic volume change dεv from p.
+struct ElasticVolumeStep {
+  double p;             ///< pressure_after(p, dεv)
+  Moduli tangent;       ///< at(pressure after)
+  Moduli secant;        ///< secant(p, dεv)
+  Moduli secant_slope;  ///< secant_slope(p, dεv)
+};
+
 class Elasticity {
  public:
   enum class Kind { Constant, PressureDependent };
@@ -60,6 +68,8 @@ class Elasticity {
   /// d/d(dεv) of secant(p, dεv): what an implicit return needs when the shear modulus is the secant
   /// one over the elastic part of its increment.
   Moduli secant_slope(double p, double d_eps_v) const;
+  /// The four at once, with one exponential on the swelling line (the implicit return's inner loop).
+  ElasticVolumeStep volume_step(double p, double d_eps_v) const;
 
  private:
   double shear_from_bulk(double K) const { return 1.5 * K * (1.0 - 2.0 * nu_) / (1.0 + nu_); }

@@ -62,10 +62,8 @@ YieldEntry yield_entry(const ModifiedCamClay& model, const State& start, const M
   };
   auto value = [&](double t) {
     Value v{};
-    v.p = elasticity.pressure_after(p_n, t * d_eps_v);
-    v.K = elasticity.at(v.p).K;
-    v.G = elasticity.secant(p_n, t * d_eps_v).G;
-    v.dG = elasticity.secant_slope(p_n, t * d_eps_v).G;
+    const ElasticVolumeStep step = elasticity.volume_step(p_n, t * d_eps_v);
+    v.p = step.p, v.K = step.tangent.K, v.G = step.secant.G, v.dG = step.secant_slope.G;
     const double Gt = v.G * t, dGt_dt = v.G + t * v.dG * d_eps_v;
     v.F = M2 * v.p * (v.p - pc) + 1.5 * (S0 + 4.0 * Gt * S1 + 4.0 * Gt * Gt * S2);
     v.dF_dt = M2 * (2.0 * v.p - pc) * v.K * d_eps_v + 1.5 * (4.0 * S1 + 8.0 * Gt * S2) * dGt_dt;
@@ -156,12 +154,13 @@ class CamClayReturn {
     x.v = v, x.l = l;
     const Elasticity& elasticity = model_.elasticity();
     const double elastic_volume = d_eps_v_ - v;
-    x.p = elasticity.pressure_after(p_n_, elastic_volume);
+    const ElasticVolumeStep step = elasticity.volume_step(p_n_, elastic_volume);
+    x.p = step.p;
     x.pc = pc_n_ * std::exp(theta_ * v);
-    x.Kt = elasticity.at(x.p).K;
-    x.G = elasticity.secant(p_n_, elastic_volume).G;
+    x.Kt = step.tangent.K;
+    x.G = step.secant.G;
     // G and p are both functions of the elastic volume alone, so dG/dp = (dG/dε_v^e)/K_t.
-    x.dG = elasticity.secant_slope(p_n_, elastic_volume).G / x.Kt;
+    x.dG = step.secant_slope.G / x.Kt;
     const double cap = 1.0 / (6.0 * x.G);
     if ((1.0 - alpha_) * l <= cap) {
       x.wt = (1.0 - alpha_) * l, x.wt_l = 1.0 - alpha_, x.wt_G = 0.0;

@@ -94,3 +94,17 @@ TEST_CASE("secant moduli keep their digits for tiny increments and their slope i
     }
   }
 }
+
+TEST_CASE("volume_step gives pressure_after, at, secant and secant_slope in one call", "[elasticity]") {
+  const Elasticity e = Elasticity::pressure_dependent(0.019, 0.68, 0.3, 1e3);
+  // On the swelling line (the one-exponential branch), into the floor, below it, and x = 0.
+  for (auto [p, d_eps_v] :
+       {std::pair{100e3, 2e-2}, {100e3, -1e-6}, {100e3, 0.0}, {2e3, -3e-2}, {500.0, 1e-3}}) {
+    INFO("p " << p << ", dεv " << d_eps_v);
+    const ElasticVolumeStep step = e.volume_step(p, d_eps_v);
+    CHECK(step.p == Approx(e.pressure_after(p, d_eps_v)).epsilon(1e-14));
+    CHECK(step.tangent.K == Approx(e.at(e.pressure_after(p, d_eps_v)).K).epsilon(1e-14));
+    CHECK(step.secant.G == Approx(e.secant(p, d_eps_v).G).epsilon(1e-14));
+    CHECK(step.secant_slope.G == Approx(e.secant_slope(p, d_eps_v).G).epsilon(1e-12));
+  }
+}
