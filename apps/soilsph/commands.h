@@ -12,7 +12,7 @@ void add_stress_test_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 
 /// `soilsph point`'s integrator when --integrator is not given.
-inline constexpr std::string_view kDefaultPointIntegrator = "substep";  // best accuracy for cost (docs/integrators.md)
+inline constexpr std::string_view kDefaultPointIntegrator = "implicit";  // best accuracy for cost (docs/integrators.md)
 void add_point_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
 void add_collapse_command(CLI::App& app);

@@ -11,7 +11,7 @@ namespace soilsph {
 enum class Integrator {
   Explicit,  ///< the paper's explicit rate form (eq 16, 21–22, 28–29) with stress correction (eq 30–35)
   Substep,   ///< modified-Euler substepping with local error control (Sloan, Abbo & Sheng 2001)
-  Implicit,  ///< closest-point projection (backward Euler) with the consistent tangent
+  Implicit,  ///< return mapping with the consistent tangent: D-P closest-point projection, MCC generalised midpoint
 };
 
 /// The input/CLI name of a scheme, e.g. "explicit".

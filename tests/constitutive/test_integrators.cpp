@@ -183,7 +183,7 @@ TEST_CASE("substep meets its error tolerance on a large triaxial-like increment"
   }
 }
 
-TEST_CASE("integrator and substep_tolerance keys: names, defaults and range", "[integrators][parameters]") {
+TEST_CASE("integrator, substep_tolerance and implicit_alpha keys: names, defaults and range", "[integrators][parameters]") {
   const std::string dp =
       "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\nyoung_modulus = 1.0e6\n"
       "poisson_ratio = 0.3\nfriction_angle = 35.0\n";
@@ -196,8 +196,13 @@ TEST_CASE("integrator and substep_tolerance keys: names, defaults and range", "[
     return read_material(TableReader(*root["material"].as_table(), "case.toml", "material"));
   };
   CHECK(std::get<DruckerPrager>(read(dp)).integrator() == Integrator::Implicit);
-  CHECK(std::get<ModifiedCamClay>(read(mcc)).integrator() == Integrator::Substep);
+  CHECK(std::get<ModifiedCamClay>(read(mcc)).integrator() == Integrator::Implicit);
   CHECK(std::get<ModifiedCamClay>(read(mcc)).substep_tolerance() == kDefaultSubstepTolerance);
+  CHECK(std::get<ModifiedCamClay>(read(mcc)).implicit_alpha() == 0.5);
+  CHECK(std::get<ModifiedCamClay>(read(mcc + "implicit_alpha = 1.0\n")).implicit_alpha() == 1.0);
+  CHECK_THROWS_WITH(read(mcc + "implicit_alpha = 0.4\n"),
+                    Catch::Contains("case.toml: [material] implicit_alpha = 0.4 is out of range") &&
+                        Catch::Contains("0.5 <= value <= 1"));
   for (std::string_view name : kIntegratorNames) {
     CHECK(integrator_name(parse_integrator(name)) == name);
     const Material m = read(mcc + "integrator = \"" + std::string(name) + "\"\nsubstep_tolerance = 1e-8\n");
