@@ -61,7 +61,8 @@ ElasticVolumeStep Elasticity::volume_step(double p, double d_eps_v) const {
   if (kind_ == Kind::PressureDependent && p >= p_floor_) {
     const double x = d_eps_v / kappa_star_, em1 = std::expm1(x);
     const double end = p + p * em1;
-    if (end >= p_floor_) {  // on the swelling line throughout
+    if (end >= p_floor_) {
+      // On the swelling line throughout: K_sec = (p/κ*) φ(x), φ = expm1(x)/x, x = dεv/κ*.
       const double K_end = end / kappa_star_;
       const double K_sec = x == 0.0 ? p / kappa_star_ : p / kappa_star_ * (em1 / x);
       const double dK = p / (kappa_star_ * kappa_star_) * expm1_ratio_slope(x, em1);
@@ -69,23 +70,15 @@ ElasticVolumeStep Elasticity::volume_step(double p, double d_eps_v) const {
           end, {K_end, shear_from_bulk(K_end)}, {K_sec, shear_from_bulk(K_sec)}, {dK, shear_from_bulk(dK)}};
     }
   }
+  // Constant elasticity, or at or below the floor for part of the step.
   const double end = pressure_after(p, d_eps_v);
-  return {end, at(end), secant(p, d_eps_v), secant_slope(p, d_eps_v)};
-}
-
-Moduli Elasticity::secant_slope(double p, double d_eps_v) const {
-  if (kind_ == Kind::Constant) return {0.0, 0.0};
-  const double end = pressure_after(p, d_eps_v);
-  double dK = 0.0;
-  if (p >= p_floor_ && end >= p_floor_) {
-    // K_sec = (p/κ*) φ(x), φ = expm1(x)/x, x = dεv/κ*; φ' = (x eˣ − expm1 x)/x² = 1/2 + x/3 + x²/8 + …
-    const double x = d_eps_v / kappa_star_;
-    dK = p / (kappa_star_ * kappa_star_) * expm1_ratio_slope(x, std::expm1(x));
-  } else if ((p < p_floor_) != (end < p_floor_)) {
+  const Moduli secant_moduli = secant(p, d_eps_v);
+  double dK = 0.0;  // constant elasticity, and below the floor throughout (K_sec = p_f/κ*)
+  if (kind_ == Kind::PressureDependent && (p < p_floor_) != (end < p_floor_)) {
     // Crossing the floor: dK_sec/dεv = (K_t(end) − K_sec)/dεv, ≥ 0 as K_t is non-decreasing in p.
-    dK = std::max((at(end).K - secant(p, d_eps_v).K) / d_eps_v, 0.0);
-  }  // below the floor throughout: K_sec = p_f/κ*, a constant
-  return {dK, shear_from_bulk(dK)};
+    dK = std::max((at(end).K - secant_moduli.K) / d_eps_v, 0.0);
+  }
+  return {end, at(end), secant_moduli, {dK, shear_from_bulk(dK)}};
 }
 
 }  // namespace soilsph

@@ -67,7 +67,7 @@ class Elasticity {
   Moduli secant(double p, double d_eps_v) const;
   /// d/d(dεv) of secant(p, dεv): what an implicit return needs when the shear modulus is the secant
   /// one over the elastic part of its increment.
-  Moduli secant_slope(double p, double d_eps_v) const;
+  Moduli secant_slope(double p, double d_eps_v) const { return volume_step(p, d_eps_v).secant_slope; }
   /// The four at once, with one exponential on the swelling line (the implicit return's inner loop).
   ElasticVolumeStep volume_step(double p, double d_eps_v) const;
 

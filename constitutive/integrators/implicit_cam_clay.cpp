@@ -308,7 +308,7 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Mat
   const double n_p = eqs.M2() * (2.0 * trial.p - trial.pc);
   double l = trial.f / (trial.Kt * n_p * n_p + 12.0 * trial.G * trial.q2 + 1e-300);
   auto x = trial;
-  bool converged = false, root_bracketed = false;
+  bool converged = false;
   double last_step = std::numeric_limits<double>::infinity(), step_before_last = last_step;
   for (int it = 0; it < kMaxIterations; ++it) {
     x = eqs.solve_volume(l, x.v);
@@ -316,17 +316,11 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Mat
       converged = true;
       break;
     }
-    if (hi - lo <= kRelativeStep * l) {
-      // The root is pinned to round-off of f when a sign change was bracketed.
-      converged = root_bracketed;
+    if (hi - lo <= kRelativeStep * l) {  // a sign change pinned to round-off of f (hi is finite)
+      converged = true;
       break;
     }
-    if (x.f > 0.0) {
-      lo = l;
-    } else {
-      hi = l;
-      root_bracketed = true;
-    }
+    (x.f > 0.0 ? lo : hi) = l;
     const double step = x.f / eqs.total_f_l(x);
     double next = l - step;
     // Bisect when Newton leaves the bracket or is slower than bisection (it can cycle where f(Δλ)
