@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "tests/common/table1_materials.h"
+#include "verification/driver/mixed_control.h"
 #include "verification/paths/load_path.h"
 #include "verification/point_test.h"
 
@@ -23,8 +24,9 @@ TEST_CASE("drained triaxial: the driver holds the radial stress to 1e-10 relativ
   const std::string integrator = GENERATE("explicit", "cvode");
   // Load, unload, reload: the legs cross first yield, elastic unloading and re-yielding.
   PointTest test = make_test(LoadPath::TriaxialDrained, {0.3, 0.15, 0.35}, 100);
-  const std::vector<Material> materials = {test::table1_drucker_prager(), test::table1_drucker_prager(5e3, 10.0),
-                                           test::table1_cam_clay(), test::table1_cam_clay(Elasticity::Kind::Constant)};
+  const std::vector<Material> materials = {test::table1_drucker_prager(),
+                                           test::table1_drucker_prager(5e3, 10.0), test::table1_cam_clay(),
+                                           test::table1_cam_clay(Elasticity::Kind::Constant)};
   for (const Material& material : materials) {
     for (double ocr : {1.0, 4.0}) {
       test.ocr = ocr;
@@ -178,4 +180,51 @@ TEST_CASE("with_integrator replaces the scheme and keeps every other parameter",
   CHECK(std::get<DruckerPrager>(dp).k_c() == test::table1_drucker_prager(5e3, 10.0).k_c());
   const Material le = with_integrator(test::linear_elastic(3e6), Integrator::Explicit);
   CHECK(std::get<LinearElastic>(le).params().young_modulus == 3e6);
+}
+
+namespace {
+/// A model that counts its updates and gives the driver either the consistent tangent or the
+/// elastic stiffness at the start of the increment (a tangent that is not the update's derivative).
+struct CountingModel {
+  const ModifiedCamClay& model;
+  bool consistent;
+  mutable long updates = 0;
+
+  const Elasticity& elasticity() const { return model.elasticity(); }
+  State update(const State& s, const Mat3& d_eps, const Mat3& d_spin) const {
+    ++updates;
+    return model.update(s, d_eps, d_spin);
+  }
+  Mat6 consistent_tangent(const State& s, const Mat3& d_eps) const {
+    if (consistent) return model.consistent_tangent(s, d_eps);
+    const Moduli D = model.elasticity().at(mean_pressure(s.stress));
+    return voigt_isotropic_stiffness(D.K, D.G);
+  }
+};
+}  // namespace
+
+TEST_CASE("implicit's consistent tangent gives the driver's Newton quadratic convergence", "[driver]") {
+  // Drained triaxial on normally consolidated Table 1 clay (K ∝ p), 20 increments to ε_a = 0.1:
+  // every increment is plastic. From the elastic first guess, Newton with the consistent tangent
+  // reaches the 1e-10 residual in a few iterations. With the elastic stiffness (a linearly
+  // converging chord method) it needs several times as many.
+  auto params = test::table1_cam_clay_params(Elasticity::Kind::PressureDependent);
+  params.integrator = Integrator::Implicit;
+  const ModifiedCamClay mcc(params);
+  PointTest t = make_test(LoadPath::TriaxialDrained, {0.1}, 20);
+  const std::vector<Leg> legs = build_legs(t);
+  State initial;
+  initial.stress = isotropic_stress(t.p_initial);
+  initial.pc = t.p_initial;
+  auto updates_per_increment = [&](bool consistent) {
+    const CountingModel counting{mcc, consistent};
+    const PointHistory history = drive_mixed_control(counting, initial, legs);
+    REQUIRE(history.size() == 21);
+    CHECK(std::abs(-history.back().state.stress(1, 1) - t.p_initial) <= 1e-10 * t.p_initial);
+    return static_cast<double>(counting.updates) / 20;
+  };
+  const double newton = updates_per_increment(true), chord = updates_per_increment(false);
+  INFO("updates per increment: consistent tangent " << newton << ", elastic stiffness " << chord);
+  CHECK(newton <= 5.0);  // the first guess and at most about 3 Newton corrections
+  CHECK(chord >= 2.0 * newton);
 }
