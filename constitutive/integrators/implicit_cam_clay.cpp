@@ -10,6 +10,7 @@ namespace soilsph {
 namespace {
 constexpr int kMaxIterations = 100;
 constexpr double kYieldTolerance = 1e-13;     ///< |f| / (M p_c)² at convergence
+constexpr double kRoundOffFactor = 8.0;       ///< |f| within this many times its round-off is converged
 constexpr double kRelativeStep = 1e-15;       ///< bracket width relative to the root at convergence
 constexpr double kAbsoluteVolume = 1e-20;     ///< plastic volume below which v is converged absolutely
 constexpr double kResidualTolerance = 1e-14;  ///< |r1| relative to its terms at convergence
@@ -204,24 +205,44 @@ class CamClayReturn {
     return -M2_ * ((2.0 * x.p - x.pc) * x.Kt + theta_ * x.p * x.pc) - q2_G(x) * x.dG * x.Kt;
   }
   double f_l(const Point& x) const { return q2_l(x); }
-  /// The size of the terms of f, for a round-off-aware convergence test.
+  /// The size of the terms of f, for a relative convergence test.
   double yield_scale(const Point& x) const { return M2_ * (x.p * x.p + x.pc * x.pc) + x.q2; }
+  /// The round-off of f at x: p = p_n + ΔP(Δε_v − v) carries ε (|p_n| + |p| + K_t(|Δε_v| + |v|)), which
+  /// dominates where the surface is tiny against the trial stress (a dilated free-surface particle:
+  /// p_c ≈ 1e-8 Pa after a 100 Pa tensile trial).
+  double yield_round_off(const Point& x) const {
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    const double dp = eps * (std::abs(p_n_) + std::abs(x.p) + x.Kt * (std::abs(d_eps_v_) + std::abs(x.v)));
+    return M2_ * std::abs(2.0 * x.p - x.pc) * dp + eps * yield_scale(x);
+  }
+  /// |f| within kYieldTolerance of its terms or, once the root is bracketed, within its round-off.
+  bool converged(const Point& x, bool bracketed) const {
+    const double round_off = bracketed ? kRoundOffFactor * yield_round_off(x) : 0.0;
+    return std::abs(x.f) <= std::max(kYieldTolerance * yield_scale(x), round_off);
+  }
 
-  /// v(Δλ) solving r1 = 0: r1 is negative at min(0, −Δλ M² p_c,n) and positive at
-  /// max(0, 2Δλ M² max(p_t, p_trial)) (the flow's weights are positive and sum to Δλ; p decreases
-  /// and p_c increases with v).
+  /// v(Δλ) solving r1 = 0. The flow's weights are positive and sum to Δλ, p decreases and p_c
+  /// increases with v, so r1 is positive at max(0, 2Δλ M² max(p_t, p_trial)) and, while p ≥ 0 for
+  /// v ≤ 0, negative at min(0, −Δλ M² p_c,n). A tensile trial (p < 0: constant elasticity, or below
+  /// the floor) can put the root lower; the lower end is then doubled until r1 < 0 there.
   Point solve_volume(double l, double v_guess) const {
     const Point trial = at(0.0, l);
     double lo = std::min(0.0, -l * M2_ * pc_n_);
     double hi = std::max(0.0, 2.0 * l * M2_ * std::max(entry_.p, trial.p));
+    for (int k = 0; k < kMaxIterations && lo < 0.0 && r1(at(lo, l)) > 0.0; ++k) {
+      hi = lo;
+      lo *= 2.0;
+    }
     double v = std::clamp(v_guess, lo, hi);
     double last_step = hi - lo, step_before_last = 2.0 * (hi - lo);
     for (int it = 0; it < kMaxIterations; ++it) {
       const Point x = at(v, l);
       const double r = r1(x);
       // Converged when r1 is round-off of its own terms (they cancel at the root).
-      if (!std::isfinite(r)) {  // p_c overflowed: v is far too large
-        hi = v;
+      if (!std::isfinite(r)) {
+        // p_c overflowed (v far too large: r1 → +∞) or, on the swelling line, p did (v far too
+        // negative: r1 → −∞).
+        (v > 0.0 ? hi : lo) = v;
         v = 0.5 * (lo + hi);
         continue;
       }
@@ -312,7 +333,7 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Mat
   double last_step = std::numeric_limits<double>::infinity(), step_before_last = last_step;
   for (int it = 0; it < kMaxIterations; ++it) {
     x = eqs.solve_volume(l, x.v);
-    if (std::abs(x.f) <= kYieldTolerance * eqs.yield_scale(x)) {
+    if (eqs.converged(x, std::isfinite(hi))) {
       converged = true;
       break;
     }
