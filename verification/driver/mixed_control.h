@@ -24,6 +24,7 @@ namespace soilsph::verification {
 struct MixedControlOptions {
   double tolerance = 1e-10;  ///< relative residual of the imposed stresses
   int max_iterations = 50;
+  int max_splits = 4;  ///< halvings of an increment whose Newton fails (up to 2^max_splits parts)
 };
 
 namespace detail {
@@ -98,11 +99,14 @@ std::optional<Trial> solve_increment(const Model& model, const State& state, con
 /// stress-imposed entries are used): returns the new state and sets `strain_increment` (Voigt,
 /// engineering shears) to the imposed and solved components. Plain Newton first; if it fails,
 /// Newton damped by backtracking, because a discrete update need not be smooth (with large
-/// increments the explicit scheme's residual has kinks and several branches). Throws
-/// std::runtime_error if neither reaches the tolerance.
+/// increments the explicit scheme's residual has kinks and several branches). If both fail, the
+/// increment is done as two halves, recursively up to `options.max_splits` times (a coarse
+/// softening step can lead Newton from the elastic guess to a stress-free state, where the tangent
+/// vanishes). Throws std::runtime_error if even the smallest pieces fail.
 template <class Model>
 State mixed_control_increment(const Model& model, const State& state, const Leg& leg, const Vec6& target,
-                              Vec6& strain_increment, const MixedControlOptions& options = {}) {
+                              Vec6& strain_increment, const MixedControlOptions& options = {},
+                              int splits = 0) {
   const Partition part(leg);
   if (part.n_free == 0) {  // strain control: one update, whose errors propagate as they are
     strain_increment = leg.increment;
@@ -114,9 +118,21 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
                                               damped, update_error))
       return solved->state;
   }
+  if (splits < options.max_splits) {
+    Leg half = leg;
+    half.increment = 0.5 * leg.increment;
+    const Vec6 middle_target = target - half.increment;  // used on the stress-imposed entries only
+    Vec6 first, second;
+    const State middle =
+        mixed_control_increment(model, state, half, middle_target, first, options, splits + 1);
+    const State end = mixed_control_increment(model, middle, half, target, second, options, splits + 1);
+    strain_increment = first + second;
+    return end;
+  }
   throw std::runtime_error("mixed control: Newton did not converge on the imposed stresses in " +
-                           std::to_string(options.max_iterations) +
-                           " iterations, plain or damped (more increments may help)" +
+                           std::to_string(options.max_iterations) + " iterations, plain or damped, in 2^" +
+                           std::to_string(options.max_splits) +
+                           " parts of the increment (more increments may help)" +
                            (update_error.empty() ? "" : "; the update failed: " + update_error));
 }
 
