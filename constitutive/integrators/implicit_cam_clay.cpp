@@ -106,9 +106,10 @@ YieldEntry yield_entry(const ModifiedCamClay& model, const State& start, const M
 /// α = ½; s = a/B with a = s_n + 2GΔe − 6G w_t s_t and B = 1 + 6G w_e. For an entry at the start
 /// the factor of s_n in a, 1 − 6G w_t, is the trapezoidal rule's amplification 1 − z/2 of the stiff
 /// shear mode (z = 6GΔλ). Past z = 2 it turns negative: the uncapped rule then has several roots
-/// and its return jumps between them as Δε changes (the mixed-control driver's Newton cycled at
-/// OCR 30 with 4–10 increments). The cap keeps that factor ≥ 0, is continuous in Δε, and tends to
-/// backward Euler as z → ∞; below the cap nothing changes.
+/// and its return jumps between them as Δε changes (on a drained OCR 30 path with 2–10 increments the
+/// driver's Newton, without splitting, completed 2 of 9 runs; with the cap, 8). The cap keeps that
+/// factor ≥ 0, is continuous in Δε, and tends to backward Euler as z → ∞; below the cap nothing
+/// changes.
 /// Volumetric part: r1 = v − M²[w_t (2p_t − p_c,n) + w_e (2p − p_c)].
 class CamClayReturn {
  public:
