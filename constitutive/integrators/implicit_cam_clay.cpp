@@ -131,7 +131,8 @@ class CamClayReturn {
         T0_(ddot(entry.s, s_n_)),
         T1_(ddot(entry.s, d_e_)),
         T2_(ddot(entry.s, entry.s)),
-        entry_flow_p_(2.0 * entry.p - pc_n_) {}
+        entry_flow_p_(2.0 * entry.p - pc_n_),
+        p_trial_(model.elasticity().pressure_after(p_n_, d_eps_v_)) {}
 
   /// Everything that depends on (v, Δλ).
   struct Point {
@@ -227,12 +228,13 @@ class CamClayReturn {
   /// v ≤ 0, negative at min(0, −Δλ M² p_c,n). A tensile trial (p < 0: constant elasticity, or below
   /// the floor) can put the root lower; the lower end is then doubled until r1 < 0 there.
   Point solve_volume(double l, double v_guess) const {
-    const Point trial = at(0.0, l);
     double lo = std::min(0.0, -l * M2_ * pc_n_);
-    double hi = std::max(0.0, 2.0 * l * M2_ * std::max(entry_.p, trial.p));
-    for (int k = 0; k < kMaxIterations && lo < 0.0 && r1(at(lo, l)) > 0.0; ++k) {
-      hi = lo;
-      lo *= 2.0;
+    double hi = std::max(0.0, 2.0 * l * M2_ * std::max(entry_.p, p_trial_));
+    if (std::min(entry_.p, p_trial_) < 0.0) {
+      for (int k = 0; k < kMaxIterations && lo < 0.0 && r1(at(lo, l)) > 0.0; ++k) {
+        hi = lo;
+        lo *= 2.0;
+      }
     }
     double v = std::clamp(v_guess, lo, hi);
     double last_step = hi - lo, step_before_last = 2.0 * (hi - lo);
@@ -317,13 +319,14 @@ class CamClayReturn {
   double S0_, S1_, S2_;  ///< s_n:s_n, s_n:Δe, Δe:Δe
   double T0_, T1_, T2_;  ///< s_t:s_n, s_t:Δe, s_t:s_t
   double entry_flow_p_;  ///< 2p_t − p_c,n: the volumetric flow direction at the entry, over M²
+  double p_trial_;       ///< p of the elastic trial
 };
 
-/// The plastic return of an increment whose elastic trial is outside the surface.
+/// The plastic return of an increment whose elastic trial (`trial`, evaluated with any entry: at
+/// Δλ = 0 only its entry-free fields are read) is outside the surface.
 State plastic_return(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
-                     const YieldEntry& entry, Mat6* tangent) {
+                     const YieldEntry& entry, const CamClayReturn::Point& trial, Mat6* tangent) {
   const CamClayReturn eqs(model, start, strain_increment, model.implicit_alpha(), entry);
-  const auto trial = eqs.at(0.0, 0.0);
   // Outer safeguarded Newton on Δλ: f > 0 on [0, lo], f < 0 at hi once found.
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
   // A first estimate from the trial's normal, n:D:n (the scale of the multiplier).
@@ -372,20 +375,19 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Mat
 State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
                       Mat6* tangent) {
   if (!(start.pc > 0.0)) throw IntegrationError("implicit (modified-cam-clay): p_c must be positive");
-  {
-    // The elastic trial (Δλ = 0: the flow weights and the entry play no part).
-    const YieldEntry start_entry = YieldEntry::at(start);
-    const CamClayReturn eqs(model, start, strain_increment, model.implicit_alpha(), start_entry);
-    const auto trial = eqs.at(0.0, 0.0);
-    if (trial.f <= 0.0) {
-      State next = start;
-      next.plastic_multiplier = 0.0;
-      next.stress = eqs.stress(trial);
-      if (tangent) *tangent = eqs.tangent(trial, false);
-      return next;
-    }
+  // The elastic trial (Δλ = 0: the flow weights and the entry play no part).
+  const YieldEntry start_entry = YieldEntry::at(start);
+  const CamClayReturn eqs(model, start, strain_increment, model.implicit_alpha(), start_entry);
+  const CamClayReturn::Point trial = eqs.at(0.0, 0.0);
+  if (trial.f <= 0.0) {
+    State next = start;
+    next.plastic_multiplier = 0.0;
+    next.stress = eqs.stress(trial);
+    if (tangent) *tangent = eqs.tangent(trial, false);
+    return next;
   }
-  return plastic_return(model, start, strain_increment, yield_entry(model, start, strain_increment), tangent);
+  return plastic_return(model, start, strain_increment, yield_entry(model, start, strain_increment), trial,
+                        tangent);
 }
 
 }  // namespace soilsph
