@@ -16,7 +16,7 @@ namespace soilsph {
 
 struct ModifiedCamClayParams {
   /// Input default: the second-order implicit return reaches an error ≤ 1e-4 cheapest on the drained
-  /// and oedometer work-precision paths, 4-10× cheaper than `substep` at its default tolerance, with a
+  /// and oedometer work-precision paths, 3-9× cheaper than `substep` at its default tolerance, with a
   /// cost per update that does not grow with the increment (docs/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
   static constexpr double kDefaultImplicitAlpha = 0.5;
