@@ -29,7 +29,7 @@ struct ElasticVolumeStep {
   double p;             ///< pressure_after(p, dεv)
   Moduli tangent;       ///< at(pressure after)
   Moduli secant;        ///< secant(p, dεv)
-  Moduli secant_slope;  ///< secant_slope(p, dεv)
+  Moduli secant_slope;  ///< d/d(dεv) of the secant moduli (what an implicit return with the secant G needs)
 };
 
 class Elasticity {
@@ -56,19 +56,11 @@ class Elasticity {
   /// pressure_after(p, dεv) − p, computed without cancellation.
   double pressure_change(double p, double d_eps_v) const;
 
-  /// dK/dp and dG/dp of the tangent moduli at(p): zero for constant elasticity and below the floor.
-  Moduli slope_at(double p) const {
-    if (kind_ == Kind::Constant || p <= p_floor_) return {0.0, 0.0};
-    return {1.0 / kappa_star_, shear_from_bulk(1.0 / kappa_star_)};
-  }
-
   /// Secant moduli over an elastic volumetric strain dεv from p: K = Δp/Δε_v (the tangent for
   /// Δε_v → 0), G from K and ν. Equal to at(p) for constant elasticity.
   Moduli secant(double p, double d_eps_v) const;
-  /// d/d(dεv) of secant(p, dεv): what an implicit return needs when the shear modulus is the secant
-  /// one over the elastic part of its increment.
-  Moduli secant_slope(double p, double d_eps_v) const { return volume_step(p, d_eps_v).secant_slope; }
-  /// The four at once, with one exponential on the swelling line (the implicit return's inner loop).
+  /// The pressure after dεv, the tangent moduli there, the secant moduli and their slope, with one
+  /// exponential on the swelling line (the implicit return's inner loop).
   ElasticVolumeStep volume_step(double p, double d_eps_v) const;
 
  private:
