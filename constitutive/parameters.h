@@ -33,6 +33,7 @@ struct Range {
   static Range open(double lo, double hi) { return {lo, hi, true, true}; }    ///< (lo, hi)
   static Range closed(double lo, double hi) { return {lo, hi, false, false}; }  ///< [lo, hi]
   static Range closed_open(double lo, double hi) { return {lo, hi, false, true}; }
+  static Range open_closed(double lo, double hi) { return {lo, hi, true, false}; }  ///< (lo, hi]
 
   bool contains(double x) const;
   std::string describe() const;  ///< e.g. "0 < value < 90"

@@ -8,10 +8,9 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out="${1:-results}"
 bash scripts/setup.sh
 mkdir -p "$out"
-# Threads: SOILSPH_THREADS (default: all cores). Idle OpenMP threads sleep instead of spinning: on a
-# shared machine spinning made 2 threads 10x slower.
-threads="${SOILSPH_THREADS:-$(nproc)}"
-export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
+# Threads: SOILSPH_THREADS (default auto: every core, one while the machine is too busy for more to
+# help; sph/thread_tuner.h).
+threads="${SOILSPH_THREADS:-auto}"
 for model in dp mcc; do
   build/apps/soilsph/soilsph collapse "data/scenes/collapse-$model.toml" --out "$out/collapse-$model" --threads "$threads"
 done

@@ -33,6 +33,20 @@ Geometry read_geometry(const TableReader& t) {
   return g;
 }
 
+/// Defaults scale with the column (sph/rest.h): 1 % of √(2gH) and √(H/g); without gravity the
+/// run has no such scale and does not stop at rest unless asked to (then 1 cm/s and 0.1 s).
+RestCriterion read_rest(const TableReader& t, const Geometry& g) {
+  const bool falls = g.gravity > 0.0;
+  RestCriterion r;
+  r.enabled = t.boolean_or("stop_at_rest", falls);
+  r.speed = t.number_or("rest_speed", falls ? 0.01 * std::sqrt(2.0 * g.gravity * g.column_height) : 0.01,
+                        Range::positive(), "m/s");
+  r.duration = t.number_or("rest_duration", falls ? std::sqrt(g.column_height / g.gravity) : 0.1,
+                           Range::positive(), "s");
+  r.fraction = t.number_or("rest_fraction", 0.99, Range::open_closed(0.5, 1.0));
+  return r;
+}
+
 InitialConditions read_initial(const TableReader& t, const Material& material) {
   // Default K0 = ν/(1−ν): the lateral stress of an elastic column under its own weight between
   // rigid, frictionless walls (uniaxial strain), so the initial state is an elastic equilibrium.
@@ -85,13 +99,15 @@ Scene read_scene(const toml::table& root, const std::string& source) {
   const TableReader output(section(root, source, "output"), source, "output");
 
   const Geometry geometry = read_geometry(scene);
+  const RestCriterion rest = read_rest(scene, geometry);
   Material material = read_material(material_table);
   Scene result{source,
                geometry,
                read_initial(initial, material),
                read_numerics(numerics),
                read_output(output, geometry.end_time),
-               std::move(material)};
+               std::move(material),
+               rest};
   for (const TableReader* t : {&scene, &initial, &numerics, &output}) t->reject_unknown_keys();
   return result;
 }

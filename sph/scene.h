@@ -9,6 +9,7 @@
 
 #include "constitutive/material.h"
 #include "sph/output/frame.h"
+#include "sph/rest.h"
 
 namespace soilsph::sph {
 
@@ -43,7 +44,7 @@ struct Numerics {
   bool artificial_stress;  ///< Gray et al. 2001 on/off
   double artificial_stress_epsilon;
   double artificial_stress_exponent;
-  double cfl;                         ///< Δt = cfl · h / c
+  double cfl;                         ///< Δt = cfl · h / (c + |v|max)
   bool velocity_gradient_correction;  ///< kernel-gradient correction of eq 23 (default off)
 };
 
@@ -61,6 +62,7 @@ struct Scene {
   Numerics numerics;
   OutputSettings output;
   Material material;
+  RestCriterion rest;  ///< [scene] stop_at_rest, rest_speed, rest_duration, rest_fraction
 };
 
 /// Reads and validates a scene from a parsed TOML document; `source` names it in errors.

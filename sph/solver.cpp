@@ -1,7 +1,6 @@
 #include "sph/solver.h"
 
 #include "sph/initial_state.h"
-#include "sph/time_step.h"
 
 namespace soilsph::sph {
 
@@ -11,11 +10,8 @@ SolverSetup make_solver_setup(const Scene& scene) {
   const double rho = density(scene.material);
   // The stiffest elastic state of the column: moduli at the largest initial pressure (constant
   // elasticity ignores it; pressure-dependent MCC is stiffest at the base).
-  const Moduli D = std::visit(
-      [&](const auto& m) { return m.elasticity().at(largest_initial_pressure(scene)); }, scene.material);
-  const double c = p_wave_speed(D, rho);
-  const double dt_cfl = cfl_time_step(scene.numerics.cfl, kernel.smoothing_length(), c);
-  const auto steps = static_cast<std::size_t>(std::ceil(g.end_time / dt_cfl - 1e-9));
+  const Elasticity elasticity = std::visit([](const auto& m) { return m.elasticity(); }, scene.material);
+  const double c = p_wave_speed(elasticity.at(largest_initial_pressure(scene)), rho);
 
   MomentumParams momentum;
   momentum.viscosity_alpha = scene.numerics.viscosity_alpha;
@@ -26,13 +22,15 @@ SolverSetup make_solver_setup(const Scene& scene) {
   momentum.artificial_stress = {scene.numerics.artificial_stress, scene.numerics.artificial_stress_epsilon,
                                 scene.numerics.artificial_stress_exponent, kernel.value(g.particle_spacing)};
   return {kernel,
-          g.end_time / static_cast<double>(steps),
+          scene.numerics.cfl,
           c,
-          steps,
+          g.end_time,
           scene.output.frame_interval,
           momentum,
           wall_guard(scene),
-          scene.numerics.velocity_gradient_correction};
+          scene.numerics.velocity_gradient_correction,
+          elasticity.kind() == Elasticity::Kind::PressureDependent,
+          scene.rest};
 }
 
 }  // namespace soilsph::sph

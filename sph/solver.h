@@ -1,15 +1,30 @@
 #pragma once
 /// @file
 /// The time loop of the collapse, in one place. `advance` is one leapfrog step and reads as the
-/// algorithm; `run` repeats it to the end time and hands frames to the caller. Both are templates
-/// on the constitutive model: the caller chooses the model once (std::visit over the Material) and
-/// the per-particle update is a direct, inlinable call.
+/// algorithm; `run` repeats it until the end time or rest and hands frames to the caller. Both are
+/// templates on the constitutive model: the caller chooses the model once (std::visit over the
+/// Material) and the per-particle update is a direct, inlinable call.
+///
+/// Threading: `run` opens ONE OpenMP parallel region for the whole run. A step is four work-shared
+/// loops over particles, each fusing every stage that reads the same data (below), plus one short
+/// serial close; that is five barriers a step instead of a fork and a join per stage. A barrier is
+/// the only cost of a second thread, and it is what a sleeping (passive) or descheduled thread makes
+/// expensive, so the fewer the better on an idle and on a busy machine alike. Called outside a
+/// parallel region (the tests), `advance` does the same work on one thread. Results do not depend on
+/// the thread count: every loop writes per particle, reductions are serial.
+#include <omp.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <string>
+#include <utility>
 
 #include "sph/kernel.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
+#include "sph/rest.h"
 #include "sph/scene.h"
 #include "sph/stages/artificial_stress.h"
 #include "sph/stages/boundaries.h"
@@ -18,19 +33,27 @@
 #include "sph/stages/momentum.h"
 #include "sph/stages/stress_update.h"
 #include "sph/stages/velocity_gradient.h"
+#include "sph/thread_tuner.h"
+#include "sph/time_step.h"
 
 namespace soilsph::sph {
 
 /// Everything fixed for a run, derived from the scene once.
 struct SolverSetup {
   CubicSpline kernel;
-  double time_step;    ///< Δt (s), CFL on the P-wave speed, shortened so that the end time is a whole step
-  double sound_speed;  ///< c (m/s)
-  std::size_t steps;   ///< steps to the end time
+  double cfl;          ///< C in Δt = C h / (c + |v|_max)
+  double sound_speed;  ///< c at the start (m/s); also the artificial viscosity's c̄
+  double end_time;     ///< s
   double frame_interval;
   MomentumParams momentum;
   WallGuard guard;
   bool velocity_gradient_correction = false;  ///< stages/velocity_gradient.h
+  bool pressure_dependent_stiffness = false;  ///< recompute c from the pressures at each search
+  RestCriterion rest;
+
+  /// Δt of the soil at rest with the initial sound speed: the largest step the run takes while c
+  /// does not fall.
+  double initial_time_step() const { return cfl_time_step(cfl, kernel.smoothing_length(), sound_speed); }
 };
 
 /// Derives the kernel, the time step and the stage parameters from the scene (sph/solver.cpp).
@@ -39,58 +62,232 @@ SolverSetup make_solver_setup(const Scene& scene);
 /// Reusable work space of the loop (no allocation after the first step).
 struct Workspace {
   NeighbourList neighbours;
+  std::vector<double> vx_next, vy_next, density_next;  ///< v^{n+½}, ρ^{n+1} while a step computes them
+  double previous_dt = 0.0;     ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
+  double sound_speed = 0.0;     ///< current c (m/s)
+  double max_speed = 0.0;       ///< largest soil speed |v^{n+½}| after the last step (m/s)
+  std::size_t moving = 0;       ///< soil particles faster than the rest speed after the last step
+  bool search_next = true;      ///< the next step searches neighbours (Verlet skin exceeded)
   std::size_t guard_corrections = 0;  ///< times the wall guard had to act (expected 0)
+  StepFailure failure;                ///< a failed constitutive update
+  std::exception_ptr error;           ///< a failed neighbour search
+
+  Workspace(const SolverSetup& setup, const Particles& p)
+      : vx_next(p.vx), vy_next(p.vy), density_next(p.density), sound_speed(setup.sound_speed) {}
+  bool failed() const { return failure.failed() || error; }
 };
 
-/// One leapfrog step from t^n to t^{n+1} (stages/leapfrog.h).
+namespace detail {
+/// The serial end of a step: swap in v^{n+½} and ρ^{n+1}, the wall guard, the step's largest speed
+/// and number of moving particles, and whether the next step must search neighbours.
 template <class Model>
-void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work) {
-  const double dt = setup.time_step;
-  NeighbourList& nl = work.neighbours;
-  nl.build(p.x, p.y, setup.kernel, p.soil_count);  // neighbours at x^n
-  mirror_stress_onto_boundary(p, nl);              // ghost σ^n, ρ^n from the soil
-  mirror_velocity_onto_boundary(p, nl);            // ghost v^{n−½} (viscosity)
-  if (setup.momentum.artificial_stress.enabled)
-    compute_artificial_stress(p, setup.momentum.artificial_stress.epsilon);
-  compute_acceleration(p, nl, setup.momentum);                           // a^n, eq 36
-  kick(p, dt);                                                           // v^{n+½}
-  mirror_velocity_onto_boundary(p, nl);                                  // ghost v^{n+½}
-  compute_velocity_gradient(p, nl, setup.velocity_gradient_correction);  // eq 23
-  compute_density_rate(p, nl);                                           // eq 11
-  update_stress(model, p, dt);  // σ^{n+1}: Jaumann + constitutive update
-  drift(p, dt);                 // ρ^{n+1}, x^{n+1}
+void close_step(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
+  std::swap(p.vx, work.vx_next);
+  std::swap(p.vy, work.vy_next);
+  std::swap(p.density, work.density_next);
   work.guard_corrections += setup.guard.apply(p);
+  work.previous_dt = dt;
+  const double rest2 = setup.rest.speed * setup.rest.speed;
+  double v2_max = 0.0;
+  std::size_t moving = 0;
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+    v2_max = std::max(v2_max, v2);
+    moving += v2 > rest2;
+  }
+  work.max_speed = std::sqrt(v2_max);
+  work.moving = moving;
+  work.search_next = work.neighbours.search_needed(p.x, p.y);
+  if constexpr (requires { model.elasticity(); }) {
+    if (setup.pressure_dependent_stiffness && work.search_next)
+      work.sound_speed = largest_p_wave_speed(model.elasticity(), p);
+  }
+}
+}  // namespace detail
+
+/// One leapfrog step of length dt from t^n to t^{n+1} (stages/leapfrog.h), then `on_closed()` on
+/// one thread. Call from every thread of a parallel region, or outside one.
+template <class Model, class OnClosed>
+void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt,
+             OnClosed&& on_closed) {
+  NeighbourList& nl = work.neighbours;
+  const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
+  const auto& m = setup.momentum;
+  const double kick_dt = kick_interval(work.previous_dt, dt);
+  if (work.search_next) {
+    try {
+      nl.search(p.x, p.y, setup.kernel, p.soil_count);  // every thread throws alike, or none
+    } catch (...) {
+#pragma omp critical(soilsph_search_failure)
+      if (!work.error) work.error = std::current_exception();
+    }
+  }
+  if (!work.error) {
+    // 1. Pairs at x^n; ghosts take σ^n, ρ^n from the soil (their v^{n−½} came with the last step);
+    //    artificial stress from σ^n, soil and ghosts.
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = 0; s < all; ++s) {
+      const auto i = static_cast<std::size_t>(s);
+      nl.fill_row(i, p.x, p.y, setup.kernel);
+      if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i);
+      if (m.artificial_stress.enabled) set_artificial_stress(p, i, m.artificial_stress.epsilon);
+    }
+    // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = 0; s < soil; ++s) {
+      const auto i = static_cast<std::size_t>(s);
+      const Acceleration a = acceleration_of(p, nl, m, i);
+      p.ax[i] = a.x, p.ay[i] = a.y;
+      work.vx_next[i] = p.vx[i] + kick_dt * a.x;
+      work.vy_next[i] = p.vy[i] + kick_dt * a.y;
+    }
+    // 3. Ghosts take v^{n+½}.
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = soil; s < all; ++s)
+      mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.vx_next, work.vy_next);
+    // 4. Eq 23 and eq 11 from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no stage of this
+    //    loop reads x or σ of a neighbour: the pairs hold x_i − x_j).
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = 0; s < soil; ++s) {
+      const auto i = static_cast<std::size_t>(s);
+      const VelocityGradient L =
+          velocity_gradient_of(p, nl, i, work.vx_next, work.vy_next, setup.velocity_gradient_correction);
+      const double rate = density_rate_of(p, nl, i, work.vx_next, work.vy_next);
+      update_particle_stress(model, p, i, L, dt, work.failure);
+      work.density_next[i] = p.density[i] + dt * rate;
+      p.x[i] += dt * work.vx_next[i];
+      p.y[i] += dt * work.vy_next[i];
+    }
+  }
+#pragma omp single
+  {
+    if (!work.failed()) detail::close_step(model, setup, p, work, dt);
+    on_closed();
+  }
+}
+
+/// One step without a callback.
+template <class Model>
+void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
+  advance(model, setup, p, work, dt, [] {});
 }
 
 struct RunStatistics {
   std::size_t steps = 0;
-  double end_time = 0.0;
+  double end_time = 0.0;  ///< time reached (s)
   double wall_seconds = 0.0;
   std::size_t guard_corrections = 0;
+  bool stopped_at_rest = false;
+  double smallest_time_step = 0.0, largest_time_step = 0.0;  ///< s
+  std::size_t neighbour_searches = 0;
 };
 
-/// Runs to the end time. Calls on_frame(particles, t) at t = 0, every frame interval and at the
-/// end, and on_step(t, steps) after every step.
+/// Chooses each step's length: the CFL step from the current state, shortened so that the run lands
+/// exactly on every frame time and on the end time (never below half a CFL step before one).
+class StepClock {
+ public:
+  explicit StepClock(const SolverSetup& setup) : setup_(setup), next_frame_(setup.frame_interval) {}
+
+  double time() const { return t_; }
+  /// The length of the next step for the current sound speed and largest speed.
+  double next_step(double sound_speed, double max_speed) {
+    cfl_dt_ = cfl_time_step(setup_.cfl, setup_.kernel.smoothing_length(), sound_speed, max_speed);
+    const double target = std::min(next_frame_, setup_.end_time), remaining = target - t_;
+    lands_ = cfl_dt_ >= remaining * (1.0 - 1e-12);
+    dt_ = lands_ ? remaining : (cfl_dt_ > 0.5 * remaining ? 0.5 * remaining : cfl_dt_);
+    return dt_;
+  }
+  /// The CFL step of the last next_step(), before any shortening.
+  double cfl_step() const { return cfl_dt_; }
+  /// Advances the time by the step taken; true if it landed on a frame time or the end time.
+  bool step_taken() {
+    if (!lands_) {
+      t_ += dt_;
+      return false;
+    }
+    t_ = std::min(next_frame_, setup_.end_time);  // exactly, without accumulated round-off
+    while (next_frame_ <= t_ * (1.0 + 1e-12)) next_frame_ += setup_.frame_interval;
+    return true;
+  }
+  bool at_end() const { return t_ >= setup_.end_time; }
+
+ private:
+  const SolverSetup& setup_;
+  double t_ = 0.0, dt_ = 0.0, cfl_dt_ = 0.0, next_frame_;
+  bool lands_ = false;
+};
+
+/// Runs to the end time, or until the soil is at rest if the scene asks for it. Calls
+/// on_frame(particles, t) at t = 0, every frame interval and at the end (the time reached), and
+/// on_step(t, steps) after every step. A failed update or search is rethrown after the region:
+/// IntegrationError naming the particle, or the search's std::runtime_error with the time added.
+/// `tuner` picks the threads of each chunk of steps (sph/thread_tuner.h); by default the OpenMP
+/// maximum throughout.
 template <class Model, class OnFrame, class OnStep>
 RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, OnFrame&& on_frame,
-                  OnStep&& on_step) {
-  const auto start = std::chrono::steady_clock::now();
-  Workspace work;
+                  OnStep&& on_step, ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false)) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  Workspace work(setup, p);
+  StepClock clock(setup);
+  RestWatch rest(setup.rest);
+  RunStatistics stats;
+  std::exception_ptr error;
+  bool stop = false;
   on_frame(p, 0.0);
-  double next_frame = setup.frame_interval;
-  double t = 0.0;
-  for (std::size_t n = 1; n <= setup.steps; ++n) {
-    advance(model, setup, p, work);
-    t = static_cast<double>(n) * setup.time_step;
-    const bool last = n == setup.steps;
-    if (t >= next_frame - 0.5 * setup.time_step || last) {
-      on_frame(p, t);
-      while (next_frame <= t + 0.5 * setup.time_step) next_frame += setup.frame_interval;
+  double dt = clock.next_step(work.sound_speed, 0.0);
+  stats.smallest_time_step = stats.largest_time_step = clock.cfl_step();
+  const auto close = [&] {  // serial, after each step
+    try {
+      const std::string when = " (step " + std::to_string(stats.steps + 1) + ", t = " +
+                               std::to_string(clock.time()) + " s)";
+      if (work.failure.failed()) throw IntegrationError(work.failure.message() + when);
+      if (work.error) {
+        try {
+          std::rethrow_exception(work.error);
+        } catch (const std::exception& e) {
+          throw std::runtime_error(e.what() + when);
+        }
+      }
+      const bool frame_due = clock.step_taken();
+      ++stats.steps;
+      on_step(clock.time(), stats.steps);
+      stats.stopped_at_rest = rest.at_rest(clock.time(), work.moving, p.soil_count);
+      stop = stats.stopped_at_rest || clock.at_end();
+      if (frame_due || stop) on_frame(p, clock.time());
+      if (!stop) {
+        dt = clock.next_step(work.sound_speed, work.max_speed);
+        stats.smallest_time_step = std::min(stats.smallest_time_step, clock.cfl_step());
+        stats.largest_time_step = std::max(stats.largest_time_step, clock.cfl_step());
+      }
+    } catch (...) {
+      error = std::current_exception();
+      stop = true;
     }
-    on_step(t, n);
+  };
+  // Chunks of about kChunkSeconds of wall time, each one parallel region with the tuner's count.
+  constexpr double kChunkSeconds = 0.05;
+  std::size_t chunk = 16;
+  while (!stop) {
+    const auto chunk_start = Clock::now();
+    const std::size_t first = stats.steps, steps_now = tuner.trying() ? std::max<std::size_t>(chunk / 4, 4) : chunk;
+#pragma omp parallel num_threads(tuner.threads())
+    for (std::size_t k = 0; k < steps_now && !stop; ++k)  // `stop` is read after the closing barrier
+      advance(model, setup, p, work, dt, close);
+    const std::chrono::duration<double> seconds = Clock::now() - chunk_start;
+    const auto steps = static_cast<double>(stats.steps - first);
+    tuner.record(seconds.count(), steps * static_cast<double>(p.soil_count));
+    if (steps > 0.0 && seconds.count() > 0.0)
+      chunk = std::clamp<std::size_t>(static_cast<std::size_t>(kChunkSeconds * steps / seconds.count()), 4, 4096);
   }
+
+  if (error) std::rethrow_exception(error);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  return {setup.steps, t, elapsed.count(), work.guard_corrections};
+  stats.end_time = clock.time();
+  stats.wall_seconds = elapsed.count();
+  stats.guard_corrections = work.guard_corrections;
+  stats.neighbour_searches = work.neighbours.searches();
+  return stats;
 }
 
 }  // namespace soilsph::sph

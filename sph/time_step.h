@@ -1,14 +1,20 @@
 #pragma once
 /// @file
-/// The time step: a CFL condition on the elastic P-wave speed,
-///   c = √((K + 4G/3)/ρ),   Δt = C_cfl · h / c.
+/// The time step: an acoustic CFL condition on the elastic P-wave speed and the flow speed,
+///   c = √((K + 4G/3)/ρ),   Δt = C_cfl · h / (c + |v|_max),
+/// re-evaluated every step from the current state (as SPHinXsys's acoustic time step, which takes
+/// the bulk speed √(K/ρ) instead: the P-wave speed is the fastest signal in an elastic solid, 1.27×
+/// the bulk speed at ν = 0.3). c is the largest over the soil: constant for constant elasticity,
+/// recomputed from the current pressures at each neighbour search for pressure-dependent MCC.
 /// The paper quotes c = 450–600 m/s, which Table 1 (E = 1 MPa, ν = 0.3, ρ = 2000 kg/m³) does not
-/// give: there c = √((K + 4G/3)/ρ) = 25.9 m/s (paper-notes). The speed consistent with the moduli is
-/// used, both here and in the artificial viscosity; it is the fastest signal in the soil, and the
-/// flow speeds (≲ √(2gH) ≈ 1.1 m/s) are far below it. C_cfl is [numerics] cfl (default 0.2).
+/// give: there c = 25.9 m/s (paper-notes). C_cfl is [numerics] cfl; its default comes from a
+/// measured stability sweep (docs/sph.md, Time step).
+#include <algorithm>
 #include <cmath>
 
 #include "constitutive/elasticity.h"
+#include "constitutive/state.h"
+#include "sph/particles.h"
 
 namespace soilsph::sph {
 
@@ -17,9 +23,17 @@ inline double p_wave_speed(const Moduli& D, double density) {
   return std::sqrt((D.K + 4.0 / 3.0 * D.G) / density);
 }
 
-/// Δt = C_cfl h / c (s).
-inline double cfl_time_step(double cfl, double smoothing_length, double sound_speed) {
-  return cfl * smoothing_length / sound_speed;
+/// Δt = C_cfl h / (c + v_max) (s).
+inline double cfl_time_step(double cfl, double smoothing_length, double sound_speed, double max_speed = 0.0) {
+  return cfl * smoothing_length / (sound_speed + max_speed);
+}
+
+/// The largest P-wave speed of the soil particles at their current pressure and density.
+inline double largest_p_wave_speed(const Elasticity& elasticity, const Particles& p) {
+  double c = 0.0;
+  for (std::size_t i = 0; i < p.soil_count; ++i)
+    c = std::max(c, p_wave_speed(elasticity.at(mean_pressure(p.state[i].stress)), p.density[i]));
+  return c;
 }
 
 }  // namespace soilsph::sph

@@ -1,7 +1,9 @@
-// `soilsph collapse SCENE.toml [--out DIR] [--threads N] [--set KEY=VALUE]...`: the SPH soil-column
+// `soilsph collapse SCENE.toml [--out DIR] [--threads N|auto] [--set KEY=VALUE]...`: the SPH soil-column
 // collapse (sph/): reads the scene, runs the solver, writes frames, summary.json and a short report.
 #include <omp.h>
 
+#include <algorithm>
+#include <charconv>
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
@@ -17,10 +19,26 @@
 namespace soilsph::cli {
 
 namespace {
+/// `--threads auto`: every core (or OMP_NUM_THREADS if less), one thread while the machine is too busy for more to help
+/// (sph/thread_tuner.h); `--threads N`: N throughout, capped at the core count, since more threads
+/// than cores only wait for each other at every barrier of a step.
+sph::ThreadTuner thread_tuner(const std::string& option) {
+  const int cores = omp_get_num_procs();
+  if (option == "auto") return sph::ThreadTuner(std::min(omp_get_max_threads(), cores), true);
+  int requested = 0;
+  const auto [end, ec] = std::from_chars(option.data(), option.data() + option.size(), requested);
+  if (ec != std::errc() || end != option.data() + option.size() || requested < 1)
+    throw std::runtime_error("--threads " + option + ": expected \"auto\" or a whole number of threads >= 1");
+  if (requested > cores)
+    std::cerr << "soilsph collapse: --threads " << requested << " capped at the " << cores
+              << " cores of this machine\n";
+  return sph::ThreadTuner(std::min(requested, cores), false);
+}
+
 struct CollapseOptions {
   std::string scene;
   std::string out = "results/collapse";
-  int threads = 1;
+  std::string threads = "auto";  ///< "auto" or a count
   std::vector<std::string> overrides;
 };
 
@@ -36,15 +54,16 @@ std::string integrator_of(const Model& model) {
 void run_collapse(const CollapseOptions& o) {
   using namespace soilsph::sph;
   const Scene scene = load_scene(o.scene, o.overrides);
-  omp_set_num_threads(o.threads);
+  const ThreadTuner tuner = thread_tuner(o.threads);
 
   Particles particles = build_particles(scene);
   set_geostatic_state(particles, scene);
   const SolverSetup setup = make_solver_setup(scene);
   std::cout << o.scene << ": " << model_name(scene.material) << ", " << particles.soil_count << " soil + "
             << particles.boundary_count() << " boundary particles, h = " << setup.kernel.smoothing_length()
-            << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.time_step << " s, " << setup.steps
-            << " steps, " << o.threads << " thread(s)" << std::endl;
+            << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step() << " s at rest, to t = "
+            << scene.geometry.end_time << " s" << (scene.rest.enabled ? " or rest, " : ", ") << tuner.threads()
+            << " thread(s)" << (o.threads == "auto" ? " (auto: fewer while they are slower)" : "") << std::endl;
 
   FrameWriter writer(o.out, scene.output.fields);
   FrameBuffers buffers;
@@ -56,7 +75,7 @@ void run_collapse(const CollapseOptions& o) {
   };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
   const RunStatistics stats = std::visit(
-      [&](const auto& model) { return run(model, setup, particles, on_frame, on_step); }, scene.material);
+      [&](const auto& model) { return run(model, setup, particles, on_frame, on_step, tuner); }, scene.material);
   progress.finish();
 
   const std::span<const double> x(particles.x.data(), particles.soil_count);
@@ -80,9 +99,14 @@ void run_collapse(const CollapseOptions& o) {
   s.kinetic_energy_end = kinetic_energy(particles);
   s.particle_spacing = scene.geometry.particle_spacing;
   s.smoothing_ratio = scene.geometry.smoothing_ratio;
-  s.time_step = setup.time_step;
-  s.threads = o.threads;
+  s.time_step = setup.initial_time_step();
+  s.smallest_time_step = stats.smallest_time_step;
+  s.largest_time_step = stats.largest_time_step;
+  s.stopped_at_rest = stats.stopped_at_rest;
+  s.guard_corrections = stats.guard_corrections;
+  s.threads = tuner.threads();
   write_summary_json(std::filesystem::path(o.out) / "summary.json", s);
+  if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
   std::cout << "runout " << s.runout_m << " m, height " << s.height_m << " m, repose angle "
             << s.repose_angle_deg << " deg, max speed at end " << s.max_speed_end << " m/s, wall guard acted "
             << stats.guard_corrections << " times\n"
@@ -100,8 +124,9 @@ void add_collapse_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", o->out, "output folder (frames.h5, frames.xdmf, summary.json)")
       ->capture_default_str();
-  cmd->add_option("--threads", o->threads, "OpenMP threads")
-      ->check(CLI::Range(1, 1024))
+  cmd->add_option("--threads", o->threads,
+                  "threads: a number (at most the cores), or auto: every core, one while the machine is too "
+                  "busy for more to help")
       ->capture_default_str();
   cmd->add_option("--set", o->overrides, "override a scene value, e.g. --set scene.particle_spacing=0.002")
       ->take_all()

@@ -2,14 +2,21 @@
 /// @file
 /// The neighbour list: for every particle i, the particles j ≠ i within the kernel support, with the
 /// pair quantities every stage needs precomputed once per step: x_i − x_j, W_ij and ∇_i W_ij.
-/// Flat arrays with a fixed number of slots per particle (grown when a particle has more neighbours),
-/// filled in one parallel pass. Boundary–boundary pairs are left out: no stage uses them (a ghost
-/// particle only reads the soil around it).
+/// Flat arrays with a fixed number of slots per particle (grown when a particle has more candidates
+/// than any before). Boundary–boundary pairs are left out: no stage uses them (a ghost particle only
+/// reads the soil around it).
 ///
 /// Verlet skin: the cell-list search finds the candidates within 2h + s (s = 0.25h) and is
 /// repeated only when some particle has moved more than s/2 since the last search (two particles
 /// then cannot have come closer than 2h without both having been candidates). Every step the pairs
-/// within 2h and their W, ∇W are recomputed from the candidates at the current positions.
+/// within 2h and their W, ∇W are recomputed from the candidates at the current positions, one row
+/// (particle) at a time, so that the solver can fuse that pass with the work on the same particle.
+/// A row has as many pair slots as candidate slots, so filling it never overflows.
+///
+/// Threading: search() and build() use orphaned OpenMP work-sharing, so they are called by every
+/// thread of an enclosing parallel region (the solver's one region per run) or, outside any region,
+/// by one thread, which then does all the work.
+#include <atomic>
 #include <span>
 #include <vector>
 
@@ -21,7 +28,7 @@ namespace soilsph::sph {
 class NeighbourList {
  public:
   /// Finds the neighbours of every point; points [first_boundary, size) are boundary points, which
-  /// must not move. Parallel over particles (OpenMP); reuses its buffers.
+  /// must not move. Searches only when search_needed(); then fills every row.
   void build(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel,
              std::size_t first_boundary);
   /// All points are soil.
@@ -29,12 +36,25 @@ class NeighbourList {
     build(x, y, kernel, x.size());
   }
 
+  /// True before the first search, for a different point count, or when a point has moved more
+  /// than half the skin since the last search (serial; O(n)).
+  bool search_needed(std::span<const double> x, std::span<const double> y) const;
+  /// The cell-list search for candidates within 2h + s. Throws std::runtime_error for a position
+  /// that is not finite or points spread over too large a domain (in the calling thread that does
+  /// the cell binning; call from a try block inside a parallel region).
+  void search(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel,
+              std::size_t first_boundary);
+  /// The pairs of particle i within the support, from its candidates (no synchronisation).
+  void fill_row(std::size_t i, std::span<const double> x, std::span<const double> y, const CubicSpline& kernel);
+
   std::size_t size() const { return count_.size(); }
   /// Pairs of particle i are [begin(i), end(i)).
   std::size_t begin(std::size_t i) const { return i * slots_; }
   std::size_t end(std::size_t i) const { return i * slots_ + count_[i]; }
-  /// Cell-list searches done so far (one per build without the skin).
+  /// Cell-list searches done so far.
   std::size_t searches() const { return searches_; }
+  /// Bytes held per particle by the list (pairs and candidates).
+  std::size_t bytes_per_particle() const;
 
   // Per pair k (i, j = neighbour[k]):
   std::vector<int> neighbour;  ///< j
@@ -45,20 +65,19 @@ class NeighbourList {
   static constexpr double kSkinRatio = 0.25;  ///< s/h
 
  private:
-  bool moved_beyond_skin(std::span<const double> x, std::span<const double> y, double skin) const;
-  /// One cell-list pass; returns the largest candidate count (above candidate_slots_: grow, redo).
-  std::size_t search(std::span<const double> x, std::span<const double> y, double radius,
-                     std::size_t first_boundary);
-  /// Pairs within the support from the candidates; returns the largest pair count.
-  std::size_t fill(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel);
+  /// Candidates of particle i within `radius`; returns how many there are (all of them, even beyond
+  /// the slots, which then must grow).
+  std::size_t search_row(std::size_t i, std::span<const double> x, std::span<const double> y, double radius2,
+                         std::size_t first_boundary);
 
   CellList cells_;
-  std::size_t slots_ = 32;            ///< pair slots per particle
-  std::size_t candidate_slots_ = 48;  ///< candidate slots per particle
+  std::size_t slots_ = 48;  ///< candidate (= pair) slots per particle
   std::vector<std::size_t> count_, candidate_count_;
   std::vector<int> candidates_;
   std::vector<double> x_ref_, y_ref_;  ///< positions at the last search
+  double half_skin2_ = 0.0;            ///< (s/2)²
   std::size_t searches_ = 0;
+  std::atomic<std::size_t> most_candidates_{0};  ///< largest row found beyond the slots (0: none)
 };
 
 }  // namespace soilsph::sph

@@ -86,6 +86,10 @@ std::string summary_json(const Summary& s) {
   field("particle_spacing", number(s.particle_spacing));
   field("smoothing_ratio", number(s.smoothing_ratio));
   field("time_step", number(s.time_step));
+  field("smallest_time_step", number(s.smallest_time_step));
+  field("largest_time_step", number(s.largest_time_step));
+  field("stopped_at_rest", s.stopped_at_rest ? "true" : "false");
+  field("guard_corrections", std::to_string(s.guard_corrections));
   return out + "\n}\n";
 }
 

@@ -14,8 +14,10 @@ struct Summary {
   std::size_t particles = 0, boundary_particles = 0, steps = 0;
   double end_time = 0, wall_seconds = 0, particle_steps_per_second = 0, runout_m = 0, height_m = 0,
          repose_angle_deg = 0, max_speed_end = 0, kinetic_energy_end = 0, particle_spacing = 0,
-         smoothing_ratio = 0, time_step = 0;
+         smoothing_ratio = 0, time_step = 0, smallest_time_step = 0, largest_time_step = 0;
   int threads = 1;
+  bool stopped_at_rest = false;      ///< the run ended at rest before the scene's end time
+  std::size_t guard_corrections = 0;  ///< times the wall guard acted (0 in a sound run)
 };
 
 /// Writes the summary as one flat JSON object (numbers in shortest round-trip form, non-finite

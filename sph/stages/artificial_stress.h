@@ -21,25 +21,34 @@ struct ArtificialStress {
   double w_at_spacing = 1.0;  ///< W(Δp)
 };
 
-/// Fills p.rxx, p.ryy, p.rxy (R, already divided by ρ²) for every particle, soil and boundary.
+/// R of particle i (already divided by ρ²) into p.rxx, p.ryy, p.rxy. A particle without a tensile
+/// principal stress, σ_max = (σxx + σyy)/2 + √(((σxx − σyy)/2)² + σxy²) ≤ 0 (most of a soil mass),
+/// gets R = 0 without the principal-axes rotation.
+inline void set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
+  const double sxx = p.sxx[i], syy = p.syy[i], sxy = p.sxy[i];
+  const double centre = 0.5 * (sxx + syy), half_difference = 0.5 * (sxx - syy);
+  if (centre + std::sqrt(half_difference * half_difference + sxy * sxy) <= 0.0) {
+    p.rxx[i] = p.ryy[i] = p.rxy[i] = 0.0;
+    return;
+  }
+  // Principal axes: tan 2θ = 2σxy / (σxx − σyy).
+  const double theta = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+  const double c = std::cos(theta), sn = std::sin(theta);
+  const double s1 = c * c * sxx + 2.0 * c * sn * sxy + sn * sn * syy;
+  const double s2 = sn * sn * sxx - 2.0 * c * sn * sxy + c * c * syy;
+  const double scale = -epsilon / (p.density[i] * p.density[i]);
+  const double r1 = s1 > 0.0 ? scale * s1 : 0.0;
+  const double r2 = s2 > 0.0 ? scale * s2 : 0.0;
+  p.rxx[i] = c * c * r1 + sn * sn * r2;
+  p.ryy[i] = sn * sn * r1 + c * c * r2;
+  p.rxy[i] = c * sn * (r1 - r2);
+}
+
+/// Fills p.rxx, p.ryy, p.rxy for every particle, soil and boundary (orphaned OpenMP loop).
 inline void compute_artificial_stress(Particles& p, double epsilon) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t s = 0; s < n; ++s) {
-    const auto i = static_cast<std::size_t>(s);
-    const double sxx = p.sxx[i], syy = p.syy[i], sxy = p.sxy[i];
-    // Principal axes: tan 2θ = 2σxy / (σxx − σyy).
-    const double theta = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
-    const double c = std::cos(theta), sn = std::sin(theta);
-    const double s1 = c * c * sxx + 2.0 * c * sn * sxy + sn * sn * syy;
-    const double s2 = sn * sn * sxx - 2.0 * c * sn * sxy + c * c * syy;
-    const double scale = -epsilon / (p.density[i] * p.density[i]);
-    const double r1 = s1 > 0.0 ? scale * s1 : 0.0;
-    const double r2 = s2 > 0.0 ? scale * s2 : 0.0;
-    p.rxx[i] = c * c * r1 + sn * sn * r2;
-    p.ryy[i] = sn * sn * r1 + c * c * r2;
-    p.rxy[i] = c * sn * (r1 - r2);
-  }
+#pragma omp for schedule(static)
+  for (std::ptrdiff_t s = 0; s < n; ++s) set_artificial_stress(p, static_cast<std::size_t>(s), epsilon);
 }
 
 }  // namespace soilsph::sph

@@ -13,63 +13,70 @@
 /// A boundary particle with no soil neighbour keeps zero stress and velocity and its density.
 #include <algorithm>
 #include <optional>
+#include <span>
 
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
 
 namespace soilsph::sph {
 
-/// Sets the ghost stress and density from the soil (before the momentum equation).
-inline void mirror_stress_onto_boundary(Particles& p, const NeighbourList& nl) {
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t s = static_cast<std::ptrdiff_t>(p.soil_count); s < n; ++s) {
-    const auto b = static_cast<std::size_t>(s);
-    double sum_w = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, rho = 0.0;
-    for (std::size_t k = nl.begin(b); k < nl.end(b); ++k) {
-      const auto j = static_cast<std::size_t>(nl.neighbour[k]);
-      if (!p.is_soil(j)) continue;
-      const double w = nl.w[k];
-      sum_w += w;
-      sxx += w * p.sxx[j];
-      syy += w * p.syy[j];
-      sxy += w * p.sxy[j];
-      rho += w * p.density[j];
-    }
-    if (sum_w <= 0.0) {
-      p.sxx[b] = p.syy[b] = p.sxy[b] = 0.0;
-      continue;
-    }
-    const double mirror = p.boundary_kind[b - p.soil_count] == BoundaryKind::FreeSlipWall ? -1.0 : 1.0;
-    p.sxx[b] = sxx / sum_w;
-    p.syy[b] = syy / sum_w;
-    p.sxy[b] = mirror * sxy / sum_w;
-    p.density[b] = rho / sum_w;
+/// Sets ghost b's stress and density from the soil (σ^n, ρ^n, before the momentum equation).
+inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std::size_t b) {
+  double sum_w = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, rho = 0.0;
+  for (std::size_t k = nl.begin(b); k < nl.end(b); ++k) {
+    const auto j = static_cast<std::size_t>(nl.neighbour[k]);  // soil: no boundary–boundary pairs
+    const double w = nl.w[k];
+    sum_w += w;
+    sxx += w * p.sxx[j];
+    syy += w * p.syy[j];
+    sxy += w * p.sxy[j];
+    rho += w * p.density[j];
   }
+  if (sum_w <= 0.0) {
+    p.sxx[b] = p.syy[b] = p.sxy[b] = 0.0;
+    return;
+  }
+  const double mirror = p.boundary_kind[b - p.soil_count] == BoundaryKind::FreeSlipWall ? -1.0 : 1.0;
+  p.sxx[b] = sxx / sum_w;
+  p.syy[b] = syy / sum_w;
+  p.sxy[b] = mirror * sxy / sum_w;
+  p.density[b] = rho / sum_w;
 }
 
-/// Sets the ghost velocity from the soil (for the viscosity, the velocity gradient and eq 11).
+/// Sets ghost b's velocity in (vx, vy) from the soil velocities in the same arrays (for the
+/// viscosity, the velocity gradient and eq 11).
+inline void mirror_velocity_onto_ghost(const Particles& p, const NeighbourList& nl, std::size_t b,
+                                       std::span<double> vx, std::span<double> vy) {
+  double sum_w = 0.0, vx_sum = 0.0, vy_sum = 0.0;
+  for (std::size_t k = nl.begin(b); k < nl.end(b); ++k) {
+    const auto j = static_cast<std::size_t>(nl.neighbour[k]);
+    sum_w += nl.w[k];
+    vx_sum += nl.w[k] * vx[j];
+    vy_sum += nl.w[k] * vy[j];
+  }
+  if (sum_w <= 0.0) {
+    vx[b] = vy[b] = 0.0;
+    return;
+  }
+  const double tangential = p.boundary_kind[b - p.soil_count] == BoundaryKind::FreeSlipWall ? 1.0 : -1.0;
+  vx[b] = -vx_sum / sum_w;
+  vy[b] = tangential * vy_sum / sum_w;
+}
+
+/// Every ghost's stress and density (orphaned OpenMP loop).
+inline void mirror_stress_onto_boundary(Particles& p, const NeighbourList& nl) {
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp for schedule(static)
+  for (std::ptrdiff_t s = static_cast<std::ptrdiff_t>(p.soil_count); s < n; ++s)
+    mirror_stress_onto_ghost(p, nl, static_cast<std::size_t>(s));
+}
+
+/// Every ghost's velocity in p.vx, p.vy (orphaned OpenMP loop).
 inline void mirror_velocity_onto_boundary(Particles& p, const NeighbourList& nl) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t s = static_cast<std::ptrdiff_t>(p.soil_count); s < n; ++s) {
-    const auto b = static_cast<std::size_t>(s);
-    double sum_w = 0.0, vx = 0.0, vy = 0.0;
-    for (std::size_t k = nl.begin(b); k < nl.end(b); ++k) {
-      const auto j = static_cast<std::size_t>(nl.neighbour[k]);
-      if (!p.is_soil(j)) continue;
-      sum_w += nl.w[k];
-      vx += nl.w[k] * p.vx[j];
-      vy += nl.w[k] * p.vy[j];
-    }
-    if (sum_w <= 0.0) {
-      p.vx[b] = p.vy[b] = 0.0;
-      continue;
-    }
-    const double tangential = p.boundary_kind[b - p.soil_count] == BoundaryKind::FreeSlipWall ? 1.0 : -1.0;
-    p.vx[b] = -vx / sum_w;
-    p.vy[b] = tangential * vy / sum_w;
-  }
+#pragma omp for schedule(static)
+  for (std::ptrdiff_t s = static_cast<std::ptrdiff_t>(p.soil_count); s < n; ++s)
+    mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), p.vx, p.vy);
 }
 
 /// The last line of defence: the wall surfaces lie half a spacing in front of the first boundary

@@ -23,44 +23,55 @@ struct MomentumParams {
   ArtificialStress artificial_stress;
 };
 
-/// Fills p.ax, p.ay for every soil particle from the current stress, density and velocity.
-inline void compute_acceleration(Particles& p, const NeighbourList& nl, const MomentumParams& m) {
+struct Acceleration {
+  double x, y;
+};
+
+/// a_i of soil particle i from the current stress, density and velocity (p.vx, p.vy).
+inline Acceleration acceleration_of(const Particles& p, const NeighbourList& nl, const MomentumParams& m,
+                                    std::size_t i) {
   const double h = m.smoothing_length, eta2 = 0.01 * h * h;
   const bool art = m.artificial_stress.enabled;
   const double inv_w_dp = 1.0 / m.artificial_stress.w_at_spacing, n_exp = m.artificial_stress.exponent;
+  const double inv_rho2_i = 1.0 / (p.density[i] * p.density[i]);
+  const double sxx_i = p.sxx[i] * inv_rho2_i, syy_i = p.syy[i] * inv_rho2_i, sxy_i = p.sxy[i] * inv_rho2_i;
+  const bool has_tension_i = p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
+  double ax = 0.0, ay = 0.0;
+  for (std::size_t k = nl.begin(i); k < nl.end(i); ++k) {
+    const auto j = static_cast<std::size_t>(nl.neighbour[k]);
+    const double inv_rho2_j = 1.0 / (p.density[j] * p.density[j]);
+    double txx = sxx_i + p.sxx[j] * inv_rho2_j;
+    double tyy = syy_i + p.syy[j] * inv_rho2_j;
+    double txy = sxy_i + p.sxy[j] * inv_rho2_j;
+    const double v_dot_r = (p.vx[i] - p.vx[j]) * nl.rx[k] + (p.vy[i] - p.vy[j]) * nl.ry[k];
+    if (v_dot_r < 0.0) {  // eq 37: only approaching pairs
+      const double phi = h * v_dot_r / (nl.rx[k] * nl.rx[k] + nl.ry[k] * nl.ry[k] + eta2);
+      const double pi = (-m.viscosity_alpha * m.sound_speed * phi + m.viscosity_beta * phi * phi) /
+                        (0.5 * (p.density[i] + p.density[j]));
+      txx -= pi;
+      tyy -= pi;
+    }
+    if (art && (has_tension_i || p.rxx[j] != 0.0 || p.ryy[j] != 0.0)) {  // R = 0 without tension
+      const double f = std::pow(nl.w[k] * inv_w_dp, n_exp);
+      txx += f * (p.rxx[i] + p.rxx[j]);
+      tyy += f * (p.ryy[i] + p.ryy[j]);
+      txy += f * (p.rxy[i] + p.rxy[j]);
+    }
+    ax += p.mass[j] * (txx * nl.gx[k] + txy * nl.gy[k]);
+    ay += p.mass[j] * (txy * nl.gx[k] + tyy * nl.gy[k]);
+  }
+  return {ax, ay - m.gravity};
+}
+
+/// Fills p.ax, p.ay for every soil particle (orphaned OpenMP loop).
+inline void compute_acceleration(Particles& p, const NeighbourList& nl, const MomentumParams& m) {
   const auto n = static_cast<std::ptrdiff_t>(p.soil_count);
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (std::ptrdiff_t s = 0; s < n; ++s) {
     const auto i = static_cast<std::size_t>(s);
-    const double inv_rho2_i = 1.0 / (p.density[i] * p.density[i]);
-    const double sxx_i = p.sxx[i] * inv_rho2_i, syy_i = p.syy[i] * inv_rho2_i, sxy_i = p.sxy[i] * inv_rho2_i;
-    const bool has_tension_i = p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
-    double ax = 0.0, ay = 0.0;
-    for (std::size_t k = nl.begin(i); k < nl.end(i); ++k) {
-      const auto j = static_cast<std::size_t>(nl.neighbour[k]);
-      const double inv_rho2_j = 1.0 / (p.density[j] * p.density[j]);
-      double txx = sxx_i + p.sxx[j] * inv_rho2_j;
-      double tyy = syy_i + p.syy[j] * inv_rho2_j;
-      double txy = sxy_i + p.sxy[j] * inv_rho2_j;
-      const double v_dot_r = (p.vx[i] - p.vx[j]) * nl.rx[k] + (p.vy[i] - p.vy[j]) * nl.ry[k];
-      if (v_dot_r < 0.0) {  // eq 37: only approaching pairs
-        const double phi = h * v_dot_r / (nl.rx[k] * nl.rx[k] + nl.ry[k] * nl.ry[k] + eta2);
-        const double pi = (-m.viscosity_alpha * m.sound_speed * phi + m.viscosity_beta * phi * phi) /
-                          (0.5 * (p.density[i] + p.density[j]));
-        txx -= pi;
-        tyy -= pi;
-      }
-      if (art && (has_tension_i || p.rxx[j] != 0.0 || p.ryy[j] != 0.0)) {  // R = 0 without tension
-        const double f = std::pow(nl.w[k] * inv_w_dp, n_exp);
-        txx += f * (p.rxx[i] + p.rxx[j]);
-        tyy += f * (p.ryy[i] + p.ryy[j]);
-        txy += f * (p.rxy[i] + p.rxy[j]);
-      }
-      ax += p.mass[j] * (txx * nl.gx[k] + txy * nl.gy[k]);
-      ay += p.mass[j] * (txy * nl.gx[k] + tyy * nl.gy[k]);
-    }
-    p.ax[i] = ax;
-    p.ay[i] = ay - m.gravity;
+    const Acceleration a = acceleration_of(p, nl, m, i);
+    p.ax[i] = a.x;
+    p.ay[i] = a.y;
   }
 }
 

@@ -42,10 +42,11 @@ Outcome throw_block(bool at_floor, double v0) {
   set_geostatic_state(p, scene);
   for (std::size_t i = 0; i < p.soil_count; ++i) (at_floor ? p.vy[i] : p.vx[i]) = at_floor ? -v0 : v0;
   const SolverSetup setup = make_solver_setup(scene);
-  Workspace work;
+  Workspace work(setup, p);
   Outcome o{-1.0, 0.0, 0};
-  for (std::size_t n = 0; n < setup.steps; ++n) {
-    advance(std::get<LinearElastic>(scene.material), setup, p, work);
+  const double dt = setup.initial_time_step();
+  for (double t = 0.0; t < setup.end_time; t += dt) {
+    advance(std::get<LinearElastic>(scene.material), setup, p, work, dt);
     for (std::size_t i = 0; i < p.soil_count; ++i) {
       const double beyond = at_floor ? setup.guard.floor_y - p.y[i] : p.x[i] - setup.guard.right_wall_x;
       o.deepest_penetration = std::max(o.deepest_penetration, beyond);

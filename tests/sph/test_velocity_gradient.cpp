@@ -59,10 +59,10 @@ TEST_CASE("eq 23 gives the linear field's gradient times the lattice moment in t
   CHECK(interior == 49);
   // Strain and spin rates split the gradient: ε̇_xy = ½(A_xy + A_yx), ω̇_xy = ½(A_xy − A_yx).
   const std::size_t centre = 7 * 15 + 7;
-  CHECK(strain_rate(p, centre)(0, 1) == Approx(0.5 * (A[0][1] + A[1][0]) * m));
-  CHECK(spin_rate(p, centre)(0, 1) == Approx(0.5 * (A[0][1] - A[1][0]) * m));
-  CHECK(spin_rate(p, centre)(1, 0) == Approx(-0.5 * (A[0][1] - A[1][0]) * m));
-  CHECK(strain_rate(p, centre)(2, 2) == 0.0);
+  CHECK(stored_velocity_gradient(p, centre).strain_rate()(0, 1) == Approx(0.5 * (A[0][1] + A[1][0]) * m));
+  CHECK(stored_velocity_gradient(p, centre).spin_rate()(0, 1) == Approx(0.5 * (A[0][1] - A[1][0]) * m));
+  CHECK(stored_velocity_gradient(p, centre).spin_rate()(1, 0) == Approx(-0.5 * (A[0][1] - A[1][0]) * m));
+  CHECK(stored_velocity_gradient(p, centre).strain_rate()(2, 2) == 0.0);
 }
 
 TEST_CASE("the corrected gradient is exact for a linear field everywhere, edges included",
