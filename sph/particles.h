@@ -26,6 +26,7 @@ struct Particles {
   std::vector<double> mass;           ///< kg per metre of thickness (plane strain)
   std::vector<double> sxx, syy, sxy;  ///< in-plane stress used by the momentum equation (Pa)
   std::vector<double> rxx, ryy, rxy;  ///< artificial stress (Gray et al. 2001), divided by ρ² (m²/s²)
+  std::vector<double> sxx_rho2, syy_rho2, sxy_rho2;  ///< σ/ρ² (m²/s²), once per particle for every pair
 
   // Soil only.
   std::vector<double> ax, ay;              ///< acceleration (m/s²)
@@ -41,11 +42,21 @@ struct Particles {
   std::size_t boundary_count() const { return size() - soil_count; }
   bool is_soil(std::size_t i) const { return i < soil_count; }
 
+  /// Bytes held by the arrays.
+  std::size_t bytes() const {
+    std::size_t b = state.capacity() * sizeof(State) + layer.capacity() * sizeof(int) + boundary_kind.capacity();
+    for (const auto* a : {&x, &y, &vx, &vy, &density, &mass, &sxx, &syy, &sxy, &rxx, &ryy, &rxy, &sxx_rho2, &syy_rho2, &sxy_rho2, &ax, &ay,
+                          &density_rate, &lxx, &lxy, &lyx, &lyy})
+      b += a->capacity() * sizeof(double);
+    return b;
+  }
+
   /// Sizes every array for `soil` soil and `boundary` boundary particles (zero-filled).
   void resize(std::size_t soil, std::size_t boundary) {
     soil_count = soil;
     const std::size_t n = soil + boundary;
-    for (auto* a : {&x, &y, &vx, &vy, &density, &mass, &sxx, &syy, &sxy, &rxx, &ryy, &rxy}) a->assign(n, 0.0);
+    for (auto* a : {&x, &y, &vx, &vy, &density, &mass, &sxx, &syy, &sxy, &rxx, &ryy, &rxy, &sxx_rho2, &syy_rho2, &sxy_rho2})
+      a->assign(n, 0.0);
     for (auto* a : {&ax, &ay, &density_rate, &lxx, &lxy, &lyx, &lyy}) a->assign(soil, 0.0);
     state.assign(soil, State{});
     layer.assign(soil, 0);

@@ -65,7 +65,7 @@ Numerics read_numerics(const TableReader& t) {
   n.artificial_stress = t.boolean_or("artificial_stress", true);
   n.artificial_stress_epsilon = t.number_or("artificial_stress_epsilon", 0.5, Range::closed(0.0, 1.0));
   n.artificial_stress_exponent = t.number_or("artificial_stress_exponent", 2.55, Range::positive());
-  n.cfl = t.number_or("cfl", 0.2, Range::closed_open(0.01, 1.0));
+  n.cfl = t.number_or("cfl", 0.5, Range::open_closed(0.0, 2.0));  // measured limit and margin: docs/sph.md
   n.velocity_gradient_correction = t.boolean_or("velocity_gradient_correction", false);
   return n;
 }

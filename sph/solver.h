@@ -124,12 +124,13 @@ void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspa
   }
   if (!work.error) {
     // 1. Pairs at x^n; ghosts take σ^n, ρ^n from the soil (their v^{n−½} came with the last step);
-    //    artificial stress from σ^n, soil and ghosts.
+    //    σ/ρ² and the artificial stress from σ^n, soil and ghosts.
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = 0; s < all; ++s) {
       const auto i = static_cast<std::size_t>(s);
       nl.fill_row(i, p.x, p.y, setup.kernel);
       if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i);
+      set_stress_over_density2(p, i);
       if (m.artificial_stress.enabled) set_artificial_stress(p, i, m.artificial_stress.epsilon);
     }
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
@@ -180,6 +181,7 @@ struct RunStatistics {
   bool stopped_at_rest = false;
   double smallest_time_step = 0.0, largest_time_step = 0.0;  ///< s
   std::size_t neighbour_searches = 0;
+  std::size_t workspace_bytes = 0;  ///< neighbour list and step buffers
 };
 
 /// Chooses each step's length: the CFL step from the current state, shortened so that the run lands
@@ -287,6 +289,8 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   stats.wall_seconds = elapsed.count();
   stats.guard_corrections = work.guard_corrections;
   stats.neighbour_searches = work.neighbours.searches();
+  stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
+                          3 * p.size() * sizeof(double);  // vx_next, vy_next, density_next
   return stats;
 }
 

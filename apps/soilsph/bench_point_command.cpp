@@ -60,6 +60,7 @@ void add_bench_command(CLI::App& app) {
     write_work_precision_csv(csv, rows);
     std::printf("wrote %s/work_precision.csv\n", o->out.c_str());
   });
+  add_bench_collapse_command(*bench);
 }
 
 }  // namespace soilsph::cli

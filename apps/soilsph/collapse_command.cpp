@@ -7,14 +7,12 @@
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
-#include "sph/analysis/deposit.h"
+#include "sph/collapse.h"
 #include "sph/diagnostics.h"
 #include "sph/frame_buffers.h"
-#include "sph/initial_state.h"
 #include "sph/output/frame_writer.h"
 #include "sph/output/progress.h"
 #include "sph/output/summary.h"
-#include "sph/solver.h"
 
 namespace soilsph::cli {
 
@@ -56,9 +54,9 @@ void run_collapse(const CollapseOptions& o) {
   const Scene scene = load_scene(o.scene, o.overrides);
   const ThreadTuner tuner = thread_tuner(o.threads);
 
-  Particles particles = build_particles(scene);
-  set_geostatic_state(particles, scene);
-  const SolverSetup setup = make_solver_setup(scene);
+  Collapse collapse(scene);
+  const Particles& particles = collapse.particles();
+  const SolverSetup& setup = collapse.setup();
   std::cout << o.scene << ": " << model_name(scene.material) << ", " << particles.soil_count << " soil + "
             << particles.boundary_count() << " boundary particles, h = " << setup.kernel.smoothing_length()
             << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step() << " s at rest, to t = "
@@ -74,14 +72,9 @@ void run_collapse(const CollapseOptions& o) {
     writer.write(buffers.view(p, t, scene.output.fields));
   };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
-  const RunStatistics stats = std::visit(
-      [&](const auto& model) { return run(model, setup, particles, on_frame, on_step, tuner); }, scene.material);
+  const RunStatistics& stats = collapse.run(tuner, on_frame, on_step);
   progress.finish();
-
-  const std::span<const double> x(particles.x.data(), particles.soil_count);
-  const std::span<const double> y(particles.y.data(), particles.soil_count);
-  const DepositMetrics deposit =
-      measure_deposit(x, y, scene.geometry.column_width, scene.geometry.particle_spacing);
+  const DepositMetrics deposit = collapse.deposit();
   Summary s;
   s.model = std::string(model_name(scene.material));
   s.integrator = std::visit([](const auto& m) { return integrator_of(m); }, scene.material);

@@ -112,11 +112,12 @@ void NeighbourList::fill_row(std::size_t i, std::span<const double> x, std::span
     const double r2 = rxij * rxij + ryij * ryij;
     if (r2 >= support2) continue;
     const double r = std::sqrt(r2);
-    const double dw_over_r = r > 0.0 ? kernel.derivative(r) / r : 0.0;
+    const auto [value, derivative] = kernel.value_and_derivative(r);
+    const double dw_over_r = r > 0.0 ? derivative / r : 0.0;
     neighbour[k] = j;
     rx[k] = rxij;
     ry[k] = ryij;
-    w[k] = kernel.value(r);
+    w[k] = value;
     gx[k] = dw_over_r * rxij;
     gy[k] = dw_over_r * ryij;
     ++k;

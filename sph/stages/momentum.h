@@ -27,22 +27,28 @@ struct Acceleration {
   double x, y;
 };
 
-/// a_i of soil particle i from the current stress, density and velocity (p.vx, p.vy).
+/// σ/ρ² of particle i, which every pair of the momentum equation reads (once per particle instead
+/// of a division per pair).
+inline void set_stress_over_density2(Particles& p, std::size_t i) {
+  const double inv_rho2 = 1.0 / (p.density[i] * p.density[i]);
+  p.sxx_rho2[i] = p.sxx[i] * inv_rho2, p.syy_rho2[i] = p.syy[i] * inv_rho2, p.sxy_rho2[i] = p.sxy[i] * inv_rho2;
+}
+
+/// a_i of soil particle i from the current σ/ρ² (set_stress_over_density2), artificial stress,
+/// density and velocity (p.vx, p.vy).
 inline Acceleration acceleration_of(const Particles& p, const NeighbourList& nl, const MomentumParams& m,
                                     std::size_t i) {
   const double h = m.smoothing_length, eta2 = 0.01 * h * h;
   const bool art = m.artificial_stress.enabled;
   const double inv_w_dp = 1.0 / m.artificial_stress.w_at_spacing, n_exp = m.artificial_stress.exponent;
-  const double inv_rho2_i = 1.0 / (p.density[i] * p.density[i]);
-  const double sxx_i = p.sxx[i] * inv_rho2_i, syy_i = p.syy[i] * inv_rho2_i, sxy_i = p.sxy[i] * inv_rho2_i;
+  const double sxx_i = p.sxx_rho2[i], syy_i = p.syy_rho2[i], sxy_i = p.sxy_rho2[i];
   const bool has_tension_i = p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
   double ax = 0.0, ay = 0.0;
   for (std::size_t k = nl.begin(i); k < nl.end(i); ++k) {
     const auto j = static_cast<std::size_t>(nl.neighbour[k]);
-    const double inv_rho2_j = 1.0 / (p.density[j] * p.density[j]);
-    double txx = sxx_i + p.sxx[j] * inv_rho2_j;
-    double tyy = syy_i + p.syy[j] * inv_rho2_j;
-    double txy = sxy_i + p.sxy[j] * inv_rho2_j;
+    double txx = sxx_i + p.sxx_rho2[j];
+    double tyy = syy_i + p.syy_rho2[j];
+    double txy = sxy_i + p.sxy_rho2[j];
     const double v_dot_r = (p.vx[i] - p.vx[j]) * nl.rx[k] + (p.vy[i] - p.vy[j]) * nl.ry[k];
     if (v_dot_r < 0.0) {  // eq 37: only approaching pairs
       const double phi = h * v_dot_r / (nl.rx[k] * nl.rx[k] + nl.ry[k] * nl.ry[k] + eta2);
@@ -63,9 +69,11 @@ inline Acceleration acceleration_of(const Particles& p, const NeighbourList& nl,
   return {ax, ay - m.gravity};
 }
 
-/// Fills p.ax, p.ay for every soil particle (orphaned OpenMP loop).
+/// Fills p.ax, p.ay for every soil particle (orphaned OpenMP loops).
 inline void compute_acceleration(Particles& p, const NeighbourList& nl, const MomentumParams& m) {
-  const auto n = static_cast<std::ptrdiff_t>(p.soil_count);
+  const auto all = static_cast<std::ptrdiff_t>(p.size()), n = static_cast<std::ptrdiff_t>(p.soil_count);
+#pragma omp for schedule(static)
+  for (std::ptrdiff_t s = 0; s < all; ++s) set_stress_over_density2(p, static_cast<std::size_t>(s));
 #pragma omp for schedule(static)
   for (std::ptrdiff_t s = 0; s < n; ++s) {
     const auto i = static_cast<std::size_t>(s);

@@ -42,8 +42,8 @@ void check_column_at_rest(const char* name) {
   CHECK(r.stats.guard_corrections == 0);
 }
 
-/// The wall withdrawn, to the shipped end time (1 s) at 2 mm: the run stays finite, the soil stays
-/// inside the walls and comes to rest, and the deposit lies within broad bands around the
+/// The wall withdrawn, at 2 mm: the run stays finite, the soil stays inside the walls and comes to
+/// rest before the shipped end time (1 s), and the deposit lies within broad bands around the
 /// scaling laws for a = H0/L0 = 1.5 (the issue): L∞ between 0.8 × Lube et al. (11.2 cm) and
 /// 1.2 × Lajeunesse et al. (14.8 cm), H∞ within 25 % of 4.7 cm, repose angle below φ = 35°.
 void check_collapse(const char* name) {
@@ -59,7 +59,13 @@ void check_collapse(const char* name) {
   CHECK(xmax <= r.setup.guard.right_wall_x);
   CHECK(ymin >= r.setup.guard.floor_y);
   CHECK(xmin > 0.04 - 0.25);   // still on the floor
-  CHECK(max_speed(p) < 0.01);  // at rest: below 1 % of √(2gH)
+  // At rest before the end time: 99 % of the particles below 1 % of √(2gH) for √(H/g) (sph/rest.h);
+  // a few surface grains may still roll.
+  CHECK(r.stats.stopped_at_rest);
+  CHECK(r.stats.end_time < 1.0);
+  std::size_t moving = 0;
+  for (std::size_t i = 0; i < p.soil_count; ++i) moving += std::hypot(p.vx[i], p.vy[i]) > 0.01 * std::sqrt(2 * 9.81 * 0.06);
+  CHECK(moving <= p.soil_count / 100);
   const DepositMetrics d =
       measure_deposit(std::span(p.x.data(), p.soil_count), std::span(p.y.data(), p.soil_count), 0.04, 0.002);
   CHECK(d.runout_m > 0.8 * 0.112);

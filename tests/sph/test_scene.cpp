@@ -30,8 +30,8 @@ TEST_CASE("overrides (--set) reach any key and unknown keys are errors", "[scene
   CHECK(build_particles(s).soil_count == 21 * 31);
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.particle_spacin=0.002"}),
                     Contains("[scene] particle_spacin") && Contains("is not a known key"));
-  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"numerics.cfl=2"}),
-                    Contains("[numerics] cfl = 2 is out of range"));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"numerics.cfl=2.5"}),
+                    Contains("[numerics] cfl = 2.5 is out of range"));
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.wall_withdrawal=\"slow\""}),
                     Contains("wall_withdrawal") && Contains("\"instant\", \"none\""));
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"solver.steps=3"}),

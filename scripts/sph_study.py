@@ -1,0 +1,220 @@
+#!/usr/bin/python3
+"""Studies of the SPH collapse: resolution, time step (CFL) and stress integrator, run as sets of
+`soilsph collapse` runs whose summary.json files are gathered into one CSV and one figure.
+Run with Debian's /usr/bin/python3 (matplotlib, numpy).
+
+    scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--jobs 2]
+    scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2]
+    scripts/sph_study.py integrator [--out DIR] [--spacing 1]
+
+Every run goes to the scene's end time or to rest (the scene's stop_at_rest). Runs go `--jobs` at a
+time with one thread each (results do not depend on the thread count; wall times are one core's).
+
+resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes. Writes DIR/resolution.csv (one row
+  per run: the summary's fields) and DIR/resolution.md: runout, height and repose angle, their
+  differences from the finest run, Richardson's observed order and extrapolated value where three
+  spacings converge monotonically, and wall time; DIR/resolution.png: error against wall time,
+  log-log, per model and measure (the SPH counterpart of the work-precision figure).
+cfl: the shipped scenes at one spacing for each CFL number, with the shipped and the implicit
+  integrator; a run counts as unstable if it fails, if the wall guard acts, or if it is not at rest by
+  its end time (2 s). Writes DIR/cfl.csv and DIR/cfl.md.
+integrator: explicit, substep and implicit for both scenes at one spacing: DIR/integrator.csv, .md.
+"""
+import argparse
+import csv
+import json
+import math
+import pathlib
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+SOILSPH = ROOT / "build" / "apps" / "soilsph" / "soilsph"
+SCENES = {"D-P": "collapse-dp", "MCC": "collapse-mcc"}
+MEASURES = (("runout_m", "runout", 100.0, "cm"), ("height_m", "height", 100.0, "cm"),
+            ("repose_angle_deg", "repose angle", 1.0, "deg"))
+
+
+def run(name, scene, overrides, out):
+    """One `soilsph collapse` run into out/name; returns its summary with the run's name and status."""
+    folder = out / "runs" / name
+    command = [str(SOILSPH), "collapse", str(ROOT / "data" / "scenes" / f"{scene}.toml"), "--out", str(folder),
+               "--threads", "1", "--set", 'output.fields=["velocity","layer"]', "--set", "output.frame_interval=0.05"]
+    for o in overrides:
+        command += ["--set", o]
+    done = subprocess.run(command, capture_output=True, text=True)
+    summary = {"run": name, "status": "ok" if done.returncode == 0 else "failed"}
+    if done.returncode == 0:
+        summary.update(json.loads((folder / "summary.json").read_text()))
+    else:
+        summary["error"] = (done.stderr.strip().splitlines() or ["?"])[-1]
+    print(f"{name}: {summary['status']}", {k: summary.get(k) for k in ("runout_m", "end_time", "wall_seconds")},
+          flush=True)
+    return summary
+
+
+def run_all(specs, out, jobs):
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return list(pool.map(lambda s: {**s[3], **run(*s[:3], out)}, specs))
+
+
+def write_csv(rows, path):
+    keys = []
+    for r in rows:
+        keys += [k for k in r if k not in keys]
+    with open(path, "w", newline="") as f:
+        f.write("# soilsph collapse study: one row per run (summary.json fields; SI units, angles in degrees)\n")
+        writer = csv.DictWriter(f, fieldnames=keys)
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def richardson(h, v):
+    """Observed order and extrapolated value from three spacings h[0] > h[1] > h[2] with ratio 2, or None
+    when the differences do not shrink monotonically."""
+    d1, d2 = v[1] - v[0], v[2] - v[1]
+    if d1 == 0 or d2 == 0 or d1 * d2 < 0 or abs(d2) >= abs(d1):
+        return None
+    order = math.log(abs(d1 / d2)) / math.log(h[0] / h[1])
+    return order, v[2] + d2 / (2 ** order - 1)
+
+
+def resolution(args):
+    out = pathlib.Path(args.out)
+    spacings = [float(s) for s in args.spacings.split(",")]
+    specs = [(f"{scene}-{s:g}mm", scene, [f"scene.particle_spacing={s / 1000}"] + args.set,
+              {"model_label": label, "spacing_mm": s})
+             for s in sorted(spacings) for label, scene in SCENES.items()]  # finest first: longest first
+    rows = run_all(specs, out, args.jobs)
+    write_csv(rows, out / "resolution.csv")
+    lines = ["# Resolution study (soilsph collapse, shipped scenes, to rest or 1 s)", "",
+             "| model | spacing (mm) | runout (cm) | height (cm) | repose (°) | Δ runout | Δ height | Δ angle (°) "
+             "| t end (s) | steps | wall (s) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for label in SCENES:
+        model_rows = sorted((r for r in rows if r["model_label"] == label and r["status"] == "ok"),
+                            key=lambda r: -r["spacing_mm"])
+        if not model_rows:
+            continue
+        finest = model_rows[-1]
+        for r in model_rows:
+            rel = [f"{100 * (r[k] - finest[k]) / finest[k]:+.1f} %" for k in ("runout_m", "height_m")]
+            lines.append(f"| {label} | {r['spacing_mm']:g} | {100 * r['runout_m']:.2f} | {100 * r['height_m']:.2f} "
+                         f"| {r['repose_angle_deg']:.1f} | {rel[0]} | {rel[1]} "
+                         f"| {r['repose_angle_deg'] - finest['repose_angle_deg']:+.1f} | {r['end_time']:.3f} "
+                         f"| {r['steps']} | {r['wall_seconds']:.1f} |")
+        if len(model_rows) >= 3:
+            h = [r["spacing_mm"] for r in model_rows[-3:]]
+            for key, name, scale, unit in MEASURES:
+                fit = richardson(h, [r[key] for r in model_rows[-3:]])
+                lines.append("" if fit is None else
+                             f"| {label} | Richardson ({name}) | order {fit[0]:.2f}, extrapolated "
+                             f"{scale * fit[1]:.2f} {unit} | | | | | | | | |")
+    lines = [line for line in lines if line]
+    (out / "resolution.md").write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    plot_resolution(rows, out / "resolution.png")
+
+
+def plot_resolution(rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4))
+    for ax, (key, name, scale, unit) in zip(axes, MEASURES):
+        for label, marker in zip(SCENES, "os"):
+            model_rows = sorted((r for r in rows if r["model_label"] == label and r["status"] == "ok"),
+                                key=lambda r: -r["spacing_mm"])
+            if len(model_rows) < 2:
+                continue
+            finest = model_rows[-1]
+            pts = [(r["wall_seconds"], abs(scale * (r[key] - finest[key])) or float("nan"), r["spacing_mm"])
+                   for r in model_rows[:-1]]
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker=marker, label=f"{label} (vs {finest['spacing_mm']:g} mm)")
+            for t, e, s in pts:
+                if e == e:
+                    ax.annotate(f"{s:g} mm", (t, e), textcoords="offset points", xytext=(4, 4), fontsize=8)
+        ax.set_xlabel("wall time of the run, one core (s)")
+        ax.set_ylabel(f"|{name} − finest| ({unit})")
+        ax.set_title(name)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+def cfl(args):
+    out = pathlib.Path(args.out)
+    values = [float(c) for c in args.cfls.split(",")]
+    specs = []
+    for label, scene in SCENES.items():
+        for integrator in ("shipped", "implicit"):
+            for c in values:
+                overrides = [f"scene.particle_spacing={args.spacing / 1000}", f"numerics.cfl={c}",
+                             "scene.end_time=2.0"] + args.set
+                if integrator != "shipped":
+                    overrides.append(f'material.integrator="{integrator}"')
+                specs.append((f"{scene}-{integrator}-cfl{c:g}", scene, overrides,
+                              {"model_label": label, "integrator_choice": integrator, "cfl": c}))
+    rows = run_all(specs, out, args.jobs)
+    write_csv(rows, out / "cfl.csv")
+    lines = [f"# CFL sweep at {args.spacing:g} mm (to rest, at most 2 s)", "",
+             "| model | integrator | cfl | stable | runout (cm) | height (cm) | repose (°) | t rest (s) | steps | wall (s) |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        stable = r["status"] == "ok" and r.get("guard_corrections", 1) == 0 and r.get("stopped_at_rest")
+        if r["status"] != "ok":
+            lines.append(f"| {r['model_label']} | {r['integrator_choice']} | {r['cfl']:g} | no: {r['error']} | | | | | | |")
+            continue
+        lines.append(f"| {r['model_label']} | {r['integrator']} | {r['cfl']:g} | {'yes' if stable else 'NO'} "
+                     f"| {100 * r['runout_m']:.2f} | {100 * r['height_m']:.2f} | {r['repose_angle_deg']:.1f} "
+                     f"| {r['end_time']:.3f} | {r['steps']} | {r['wall_seconds']:.1f} |")
+    (out / "cfl.md").write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def integrator(args):
+    out = pathlib.Path(args.out)
+    specs = [(f"{scene}-{name}", scene, [f"scene.particle_spacing={args.spacing / 1000}",
+                                         f'material.integrator="{name}"'] + args.set,
+              {"model_label": label})
+             for label, scene in SCENES.items() for name in ("explicit", "substep", "implicit")]
+    rows = run_all(specs, out, args.jobs)
+    write_csv(rows, out / "integrator.csv")
+    lines = [f"# Stress integrator at {args.spacing:g} mm (to rest or 1 s)", "",
+             "| model | integrator | runout (cm) | height (cm) | repose (°) | t end (s) | wall (s) |",
+             "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        if r["status"] == "ok":
+            lines.append(f"| {r['model_label']} | {r['integrator']} | {100 * r['runout_m']:.2f} | {100 * r['height_m']:.2f} "
+                         f"| {r['repose_angle_deg']:.1f} | {r['end_time']:.3f} | {r['wall_seconds']:.1f} |")
+        else:
+            lines.append(f"| {r['model_label']} | {r['run']} | failed: {r['error']} | | | | |")
+    (out / "integrator.md").write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="study", required=True)
+    for name, default_out in (("resolution", "results/study-resolution"), ("cfl", "results/study-cfl"),
+                              ("integrator", "results/study-integrator")):
+        p = sub.add_parser(name)
+        p.add_argument("--out", default=default_out)
+        p.add_argument("--jobs", type=int, default=2, help="runs at a time, one thread each")
+        p.add_argument("--set", action="append", default=[], help="extra --set for every run")
+        if name == "resolution":
+            p.add_argument("--spacings", default="4,2,1,0.5", help="particle spacings in mm")
+        else:
+            p.add_argument("--spacing", type=float, default=2.0 if name == "cfl" else 1.0, help="mm")
+        if name == "cfl":
+            p.add_argument("--cfls", default="0.2,0.3,0.4,0.5,0.6,0.8")
+    args = parser.parse_args()
+    if not SOILSPH.exists():
+        sys.exit(f"sph_study: {SOILSPH} not found: build first (bash scripts/setup.sh)")
+    pathlib.Path(args.out).mkdir(parents=True, exist_ok=True)
+    {"resolution": resolution, "cfl": cfl, "integrator": integrator}[args.study](args)
+
+
+if __name__ == "__main__":
+    main()

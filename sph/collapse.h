@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// One collapse of a scene, from the scene to the deposit: the particles and their geostatic state,
+/// the solver setup, the time loop with the model chosen once (std::visit), and the deposit
+/// measures. `soilsph collapse` and `soilsph bench collapse` both run scenes through it.
+#include <utility>
+
+#include "sph/analysis/deposit.h"
+#include "sph/initial_state.h"
+#include "sph/solver.h"
+
+namespace soilsph::sph {
+
+class Collapse {
+ public:
+  explicit Collapse(const Scene& scene)
+      : scene_(scene), particles_(build_particles(scene)), setup_((set_geostatic_state(particles_, scene), make_solver_setup(scene))) {}
+
+  /// Runs the scene (solver.h, run) and returns its statistics.
+  template <class OnFrame, class OnStep>
+  const RunStatistics& run(ThreadTuner tuner, OnFrame&& on_frame, OnStep&& on_step) {
+    stats_ = std::visit(
+        [&](const auto& model) {
+          return sph::run(model, setup_, particles_, std::forward<OnFrame>(on_frame), std::forward<OnStep>(on_step),
+                          tuner);
+        },
+        scene_.material);
+    return stats_;
+  }
+  /// Runs without frames or progress.
+  const RunStatistics& run(ThreadTuner tuner) {
+    return run(tuner, [](const Particles&, double) {}, [](double, std::size_t) {});
+  }
+
+  /// Runout, height and repose angle of the soil now (analysis/deposit.h).
+  DepositMetrics deposit() const {
+    return measure_deposit({particles_.x.data(), particles_.soil_count}, {particles_.y.data(), particles_.soil_count},
+                           scene_.geometry.column_width, scene_.geometry.particle_spacing);
+  }
+
+  const Scene& scene() const { return scene_; }
+  const Particles& particles() const { return particles_; }
+  const SolverSetup& setup() const { return setup_; }
+  const RunStatistics& stats() const { return stats_; }
+
+ private:
+  const Scene& scene_;
+  Particles particles_;
+  SolverSetup setup_;
+  RunStatistics stats_;
+};
+
+}  // namespace soilsph::sph

@@ -1,0 +1,102 @@
+// The leapfrog with its half first kick and variable steps, the step clock, and the rest criterion.
+#include <catch2/catch.hpp>
+
+#include "helpers.h"
+#include "sph/solver.h"
+
+using namespace soilsph;
+using namespace soilsph::sph;
+
+namespace {
+/// One isolated soil particle under gravity: no neighbours, so a = −g exactly.
+struct FreeFall {
+  Particles p = test::lattice(1, 1e-3, 2000.0);
+  LinearElastic model{{2000.0, 1.0e6, 0.3}};
+  SolverSetup setup{CubicSpline(1.3e-3), 0.5, 25.0, 1.0, 1.0, MomentumParams{}, WallGuard{-1e9, 1e9, std::nullopt},
+                    false, false, RestCriterion{}};
+  FreeFall() {
+    setup.momentum.gravity = 9.81;
+    setup.momentum.smoothing_length = 1.3e-3;
+    setup.momentum.artificial_stress.enabled = false;
+    p.y[0] = 1.0;
+  }
+};
+}  // namespace
+
+TEST_CASE("the leapfrog starts with half a kick: free fall is exact at whole steps", "[leapfrog]") {
+  // With v^{1/2} = ½Δt a^0 the leapfrog reproduces y = y0 − ½ g t² exactly for a constant
+  // acceleration, also across a change of step (kick ½(Δt_{n−1} + Δt_n)). A full first kick
+  // (v^{1/2} = Δt a^0) would be ahead by ½ g Δt_0 t.
+  FreeFall f;
+  Workspace work(f.setup, f.p);
+  double t = 0.0;
+  for (const double dt : {1e-3, 1e-3, 2e-3, 0.5e-3, 3e-3, 1e-3}) {
+    advance(f.model, f.setup, f.p, work, dt);
+    t += dt;
+  }
+  CHECK(f.p.y[0] == Approx(1.0 - 0.5 * 9.81 * t * t).epsilon(1e-12));
+  CHECK(f.p.x[0] == 0.0);
+  // v^{n+½} = −g (t^n + ½Δt_n) with the last step's Δt = 1e-3.
+  CHECK(f.p.vy[0] == Approx(-9.81 * (t - 0.5e-3)).epsilon(1e-12));
+}
+
+TEST_CASE("the step clock lands on every frame time and on the end time", "[leapfrog]") {
+  FreeFall f;
+  f.setup.end_time = 0.1;
+  f.setup.frame_interval = 0.03;
+  StepClock clock(f.setup);
+  std::vector<double> frames;
+  double smallest = 1.0;
+  while (!clock.at_end()) {
+    const double dt = clock.next_step(7.0, 0.0);  // CFL step 0.5 × 1.3e-3 / 7 = 9.3e-5 s
+    smallest = std::min(smallest, dt);
+    if (clock.step_taken()) frames.push_back(clock.time());
+  }
+  REQUIRE(frames.size() == 4);
+  CHECK(frames[0] == 0.03);
+  CHECK(frames[1] == 0.06);
+  CHECK(frames[2] == Approx(0.09).epsilon(1e-12));
+  CHECK(frames[3] == 0.1);
+  CHECK(smallest >= 0.5 * 0.5 * 1.3e-3 / 7.0 * (1 - 1e-9));  // never below half a CFL step
+}
+
+TEST_CASE("the CFL step falls with the flow speed", "[leapfrog]") {
+  FreeFall f;
+  StepClock clock(f.setup);
+  CHECK(clock.next_step(25.0, 0.0) == Approx(0.5 * 1.3e-3 / 25.0));
+  CHECK(clock.next_step(25.0, 25.0) == Approx(0.5 * 1.3e-3 / 50.0));
+}
+
+TEST_CASE("rest: a few movers are allowed, a sustained quiet is required", "[rest]") {
+  RestCriterion c;
+  c.speed = 0.01, c.duration = 0.05, c.fraction = 0.99;
+  CHECK(c.movers_allowed(2501) == 25);
+  CHECK(c.movers_allowed(100) == 1);
+  RestWatch watch(c);
+  CHECK_FALSE(watch.at_rest(0.10, 26, 2501));  // too many movers
+  CHECK_FALSE(watch.at_rest(0.11, 25, 2501));  // quiet from 0.11 s ...
+  CHECK_FALSE(watch.at_rest(0.15, 3, 2501));
+  CHECK_FALSE(watch.at_rest(0.155, 40, 2501));  // ... broken: starts again
+  CHECK_FALSE(watch.at_rest(0.16, 0, 2501));
+  CHECK_FALSE(watch.at_rest(0.2099, 0, 2501));
+  CHECK(watch.at_rest(0.2101, 0, 2501));  // 0.05 s of quiet
+  c.enabled = false;
+  RestWatch off(c);
+  CHECK_FALSE(off.at_rest(10.0, 0, 2501));
+}
+
+TEST_CASE("stop at rest: a column held by both walls stops after the rest duration", "[rest][column]") {
+  const Scene scene = test::shipped_scene(
+      "collapse-dp", {"scene.particle_spacing=0.004", "scene.wall_withdrawal=\"none\"", "scene.rest_duration=0.02"});
+  Particles p = build_particles(scene);
+  set_geostatic_state(p, scene);
+  const SolverSetup setup = make_solver_setup(scene);
+  double last_frame = -1.0;
+  const RunStatistics stats = run(
+      std::get<DruckerPrager>(scene.material), setup, p, [&](const Particles&, double t) { last_frame = t; },
+      [](double, std::size_t) {});
+  CHECK(stats.stopped_at_rest);
+  // At rest from the first steps (the geostatic state is an equilibrium): stops at 0.02 s plus a step.
+  CHECK(stats.end_time == Approx(0.02).margin(2 * setup.initial_time_step()));
+  CHECK(last_frame == stats.end_time);  // the final frame is written at the time reached
+}
