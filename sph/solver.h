@@ -146,16 +146,15 @@ void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspa
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = soil; s < all; ++s)
       mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.vx_next, work.vy_next);
-    // 4. Eq 23 and eq 11 from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no stage of this
-    //    loop reads x or σ of a neighbour: the pairs hold x_i − x_j).
+    // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
+    //    stage of this loop reads x or σ of a neighbour: the pairs hold x_i − x_j).
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = 0; s < soil; ++s) {
       const auto i = static_cast<std::size_t>(s);
-      const VelocityGradient L =
-          velocity_gradient_of(p, nl, i, work.vx_next, work.vy_next, setup.velocity_gradient_correction);
-      const double rate = density_rate_of(p, nl, i, work.vx_next, work.vy_next);
-      update_particle_stress(model, p, i, L, dt, work.failure);
-      work.density_next[i] = p.density[i] + dt * rate;
+      const KinematicRates rates =
+          kinematic_rates_of(p, nl, i, work.vx_next, work.vy_next, setup.velocity_gradient_correction);
+      update_particle_stress(model, p, i, rates.L, dt, work.failure);
+      work.density_next[i] = p.density[i] + dt * rates.density_rate;
       p.x[i] += dt * work.vx_next[i];
       p.y[i] += dt * work.vy_next[i];
     }
@@ -290,7 +289,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   stats.guard_corrections = work.guard_corrections;
   stats.neighbour_searches = work.neighbours.searches();
   stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
-                          3 * p.size() * sizeof(double);  // vx_next, vy_next, density_next
+                          3 * p.size() * sizeof(double);  // the *_next buffers
   return stats;
 }
 

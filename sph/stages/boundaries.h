@@ -23,15 +23,13 @@ namespace soilsph::sph {
 /// Sets ghost b's stress and density from the soil (σ^n, ρ^n, before the momentum equation).
 inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std::size_t b) {
   double sum_w = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, rho = 0.0;
-  for (std::size_t k = nl.begin(b); k < nl.end(b); ++k) {
-    const auto j = static_cast<std::size_t>(nl.neighbour[k]);  // soil: no boundary–boundary pairs
-    const double w = nl.w[k];
-    sum_w += w;
-    sxx += w * p.sxx[j];
-    syy += w * p.syy[j];
-    sxy += w * p.sxy[j];
-    rho += w * p.density[j];
-  }
+  nl.for_each_pair(b, [&](const NeighbourList::Pair& q) {  // soil: no boundary–boundary pairs
+    sum_w += q.w;
+    sxx += q.w * p.sxx[q.j];
+    syy += q.w * p.syy[q.j];
+    sxy += q.w * p.sxy[q.j];
+    rho += q.w * p.density[q.j];
+  });
   if (sum_w <= 0.0) {
     p.sxx[b] = p.syy[b] = p.sxy[b] = 0.0;
     return;
@@ -48,12 +46,11 @@ inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std:
 inline void mirror_velocity_onto_ghost(const Particles& p, const NeighbourList& nl, std::size_t b,
                                        std::span<double> vx, std::span<double> vy) {
   double sum_w = 0.0, vx_sum = 0.0, vy_sum = 0.0;
-  for (std::size_t k = nl.begin(b); k < nl.end(b); ++k) {
-    const auto j = static_cast<std::size_t>(nl.neighbour[k]);
-    sum_w += nl.w[k];
-    vx_sum += nl.w[k] * vx[j];
-    vy_sum += nl.w[k] * vy[j];
-  }
+  nl.for_each_pair(b, [&](const NeighbourList::Pair& q) {
+    sum_w += q.w;
+    vx_sum += q.w * vx[q.j];
+    vy_sum += q.w * vy[q.j];
+  });
   if (sum_w <= 0.0) {
     vx[b] = vy[b] = 0.0;
     return;

@@ -44,28 +44,28 @@ inline Acceleration acceleration_of(const Particles& p, const NeighbourList& nl,
   const double sxx_i = p.sxx_rho2[i], syy_i = p.syy_rho2[i], sxy_i = p.sxy_rho2[i];
   const bool has_tension_i = p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
   double ax = 0.0, ay = 0.0;
-  for (std::size_t k = nl.begin(i); k < nl.end(i); ++k) {
-    const auto j = static_cast<std::size_t>(nl.neighbour[k]);
+  nl.for_each_pair(i, [&](const NeighbourList::Pair& q) {
+    const std::size_t j = q.j;
     double txx = sxx_i + p.sxx_rho2[j];
     double tyy = syy_i + p.syy_rho2[j];
     double txy = sxy_i + p.sxy_rho2[j];
-    const double v_dot_r = (p.vx[i] - p.vx[j]) * nl.rx[k] + (p.vy[i] - p.vy[j]) * nl.ry[k];
+    const double v_dot_r = (p.vx[i] - p.vx[j]) * q.rx + (p.vy[i] - p.vy[j]) * q.ry;
     if (v_dot_r < 0.0) {  // eq 37: only approaching pairs
-      const double phi = h * v_dot_r / (nl.rx[k] * nl.rx[k] + nl.ry[k] * nl.ry[k] + eta2);
+      const double phi = h * v_dot_r / (q.rx * q.rx + q.ry * q.ry + eta2);
       const double pi = (-m.viscosity_alpha * m.sound_speed * phi + m.viscosity_beta * phi * phi) /
                         (0.5 * (p.density[i] + p.density[j]));
       txx -= pi;
       tyy -= pi;
     }
     if (art && (has_tension_i || p.rxx[j] != 0.0 || p.ryy[j] != 0.0)) {  // R = 0 without tension
-      const double f = std::pow(nl.w[k] * inv_w_dp, n_exp);
+      const double f = std::pow(q.w * inv_w_dp, n_exp);
       txx += f * (p.rxx[i] + p.rxx[j]);
       tyy += f * (p.ryy[i] + p.ryy[j]);
       txy += f * (p.rxy[i] + p.rxy[j]);
     }
-    ax += p.mass[j] * (txx * nl.gx[k] + txy * nl.gy[k]);
-    ay += p.mass[j] * (txy * nl.gx[k] + tyy * nl.gy[k]);
-  }
+    ax += p.mass[j] * (txx * q.gx + txy * q.gy);
+    ay += p.mass[j] * (txy * q.gx + tyy * q.gy);
+  });
   return {ax, ay - m.gravity};
 }
 

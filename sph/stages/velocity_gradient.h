@@ -39,33 +39,40 @@ struct VelocityGradient {
   }
 };
 
-/// Eq 23 at soil particle i with the velocities (vx, vy); `corrected` applies M⁻¹.
-inline VelocityGradient velocity_gradient_of(const Particles& p, const NeighbourList& nl, std::size_t i,
-                                             std::span<const double> vx, std::span<const double> vy,
-                                             bool corrected) {
+/// Eq 23 at soil particle i and, in the same pass over its pairs, the continuity equation's
+/// Dρ_i/Dt = Σ_j m_j (v_i − v_j)·∇_i W_ij (eq 11, stages/continuity.h), with the velocities (vx, vy).
+struct KinematicRates {
   VelocityGradient L;
+  double density_rate;
+};
+inline KinematicRates kinematic_rates_of(const Particles& p, const NeighbourList& nl, std::size_t i,
+                                         std::span<const double> vx, std::span<const double> vy,
+                                         bool corrected) {
+  VelocityGradient L;
+  double rate = 0.0;
   double mxx = 0.0, mxy = 0.0, myx = 0.0, myy = 0.0;  // kernel moment M (x_j − x_i = −r)
-  for (std::size_t k = nl.begin(i); k < nl.end(i); ++k) {
-    const auto j = static_cast<std::size_t>(nl.neighbour[k]);
+  nl.for_each_pair(i, [&](const NeighbourList::Pair& q) {
+    const std::size_t j = q.j;
     const double volume = p.mass[j] / p.density[j];
-    const double dvx = volume * (vx[j] - vx[i]), dvy = volume * (vy[j] - vy[i]);
-    L.xx += dvx * nl.gx[k];
-    L.xy += dvx * nl.gy[k];
-    L.yx += dvy * nl.gx[k];
-    L.yy += dvy * nl.gy[k];
+    const double dvx = vx[j] - vx[i], dvy = vy[j] - vy[i];
+    L.xx += volume * dvx * q.gx;
+    L.xy += volume * dvx * q.gy;
+    L.yx += volume * dvy * q.gx;
+    L.yy += volume * dvy * q.gy;
+    rate -= p.mass[j] * (dvx * q.gx + dvy * q.gy);
     if (corrected) {
-      mxx -= volume * nl.rx[k] * nl.gx[k];
-      mxy -= volume * nl.rx[k] * nl.gy[k];
-      myx -= volume * nl.ry[k] * nl.gx[k];
-      myy -= volume * nl.ry[k] * nl.gy[k];
+      mxx -= volume * q.rx * q.gx;
+      mxy -= volume * q.rx * q.gy;
+      myx -= volume * q.ry * q.gx;
+      myy -= volume * q.ry * q.gy;
     }
-  }
+  });
   const double det = mxx * myy - mxy * myx;
   if (corrected && det > 0.1) {  // L ← L M⁻¹
     const double ixx = myy / det, ixy = -mxy / det, iyx = -myx / det, iyy = mxx / det;
-    return {L.xx * ixx + L.xy * iyx, L.xx * ixy + L.xy * iyy, L.yx * ixx + L.yy * iyx, L.yx * ixy + L.yy * iyy};
+    L = {L.xx * ixx + L.xy * iyx, L.xx * ixy + L.xy * iyy, L.yx * ixx + L.yy * iyx, L.yx * ixy + L.yy * iyy};
   }
-  return L;
+  return {L, rate};
 }
 
 /// Fills p.lxx, p.lxy, p.lyx, p.lyy for every soil particle from p.vx, p.vy (orphaned OpenMP loop).
@@ -74,7 +81,7 @@ inline void compute_velocity_gradient(Particles& p, const NeighbourList& nl, boo
 #pragma omp for schedule(static)
   for (std::ptrdiff_t s = 0; s < n; ++s) {
     const auto i = static_cast<std::size_t>(s);
-    const VelocityGradient L = velocity_gradient_of(p, nl, i, p.vx, p.vy, corrected);
+    const VelocityGradient L = kinematic_rates_of(p, nl, i, p.vx, p.vy, corrected).L;
     p.lxx[i] = L.xx, p.lxy[i] = L.xy, p.lyx[i] = L.yx, p.lyy[i] = L.yy;
   }
 }
