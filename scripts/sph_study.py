@@ -32,8 +32,8 @@ from concurrent.futures import ThreadPoolExecutor
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 SOILSPH = ROOT / "build" / "apps" / "soilsph" / "soilsph"
 SCENES = {"D-P": "collapse-dp", "MCC": "collapse-mcc"}
-MEASURES = (("runout_m", "runout", 100.0, "cm"), ("height_m", "height", 100.0, "cm"),
-            ("repose_angle_deg", "repose angle", 1.0, "deg"))
+MEASURES = (("runout_m", "runout", 100.0, "cm"), ("runout_thick_m", "runout where H0/10 thick", 100.0, "cm"),
+            ("height_m", "height", 100.0, "cm"), ("repose_angle_deg", "repose angle", 1.0, "deg"))
 
 
 def run(name, scene, overrides, out):
@@ -88,9 +88,11 @@ def resolution(args):
              for s in sorted(spacings) for label, scene in SCENES.items()]  # finest first: longest first
     rows = run_all(specs, out, args.jobs)
     write_csv(rows, out / "resolution.csv")
+    header = " | ".join(f"{name} ({unit})" for _, name, _, unit in MEASURES)
     lines = ["# Resolution study (soilsph collapse, shipped scenes, to rest or 1 s)", "",
-             "| model | spacing (mm) | runout (cm) | height (cm) | repose (°) | Δ runout | Δ height | Δ angle (°) "
-             "| t end (s) | steps | wall (s) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "Differences from the finest run in brackets (per cent; degrees for the angle).", "",
+             f"| model | spacing (mm) | {header} | t end (s) | steps | wall (s) |",
+             "|---|---|" + "---|" * len(MEASURES) + "---|---|---|"]
     for label in SCENES:
         model_rows = sorted((r for r in rows if r["model_label"] == label and r["status"] == "ok"),
                             key=lambda r: -r["spacing_mm"])
@@ -98,18 +100,19 @@ def resolution(args):
             continue
         finest = model_rows[-1]
         for r in model_rows:
-            rel = [f"{100 * (r[k] - finest[k]) / finest[k]:+.1f} %" for k in ("runout_m", "height_m")]
-            lines.append(f"| {label} | {r['spacing_mm']:g} | {100 * r['runout_m']:.2f} | {100 * r['height_m']:.2f} "
-                         f"| {r['repose_angle_deg']:.1f} | {rel[0]} | {rel[1]} "
-                         f"| {r['repose_angle_deg'] - finest['repose_angle_deg']:+.1f} | {r['end_time']:.3f} "
-                         f"| {r['steps']} | {r['wall_seconds']:.1f} |")
+            cells = []
+            for key, _, scale, unit in MEASURES:
+                d = r[key] - finest[key] if unit == "deg" else 100 * (r[key] - finest[key]) / finest[key]
+                cells.append(f"{scale * r[key]:.2f} ({d:+.1f}{'°' if unit == 'deg' else ' %'})")
+            lines.append(f"| {label} | {r['spacing_mm']:g} | " + " | ".join(cells) +
+                         f" | {r['end_time']:.3f} | {r['steps']} | {r['wall_seconds']:.1f} |")
         if len(model_rows) >= 3:
             h = [r["spacing_mm"] for r in model_rows[-3:]]
             for key, name, scale, unit in MEASURES:
                 fit = richardson(h, [r[key] for r in model_rows[-3:]])
                 lines.append("" if fit is None else
-                             f"| {label} | Richardson ({name}) | order {fit[0]:.2f}, extrapolated "
-                             f"{scale * fit[1]:.2f} {unit} | | | | | | | | |")
+                             f"| {label} | Richardson ({name}, last three) | order {fit[0]:.2f}, extrapolated "
+                             f"{scale * fit[1]:.2f} {unit} |" + " |" * (len(MEASURES) + 2))
     lines = [line for line in lines if line]
     (out / "resolution.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -120,7 +123,7 @@ def plot_resolution(rows, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4))
+    fig, axes = plt.subplots(1, len(MEASURES), figsize=(4.3 * len(MEASURES), 4))
     for ax, (key, name, scale, unit) in zip(axes, MEASURES):
         for label, marker in zip(SCENES, "os"):
             model_rows = sorted((r for r in rows if r["model_label"] == label and r["status"] == "ok"),

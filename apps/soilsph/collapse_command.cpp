@@ -88,6 +88,7 @@ void run_collapse(const CollapseOptions& o) {
   s.runout_m = deposit.runout_m;
   s.height_m = deposit.height_m;
   s.repose_angle_deg = deposit.repose_angle_deg;
+  s.runout_thick_m = deposit.runout_thick_m;
   s.max_speed_end = max_speed(particles);
   s.kinetic_energy_end = kinetic_energy(particles);
   s.particle_spacing = scene.geometry.particle_spacing;
@@ -100,7 +101,7 @@ void run_collapse(const CollapseOptions& o) {
   s.threads = tuner.threads();
   write_summary_json(std::filesystem::path(o.out) / "summary.json", s);
   if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
-  std::cout << "runout " << s.runout_m << " m, height " << s.height_m << " m, repose angle "
+  std::cout << "runout " << s.runout_m << " m (" << s.runout_thick_m << " m where H0/10 thick), height " << s.height_m << " m, repose angle "
             << s.repose_angle_deg << " deg, max speed at end " << s.max_speed_end << " m/s, wall guard acted "
             << stats.guard_corrections << " times\n"
             << s.wall_seconds << " s wall, " << s.particle_steps_per_second << " particle-steps/s; output in "

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <numeric>
@@ -82,17 +83,32 @@ std::vector<std::size_t> largest_cluster(std::span<const double> x, std::span<co
   return cluster;
 }
 
-/// Slope angle of the surface between toe and crest (see deposit.h), degrees.
-double repose_angle(std::span<const double> x, std::span<const double> y,
-                    const std::vector<std::size_t>& cluster, double fixed_wall_x, double spacing,
-                    double height) {
-  // Top particle of each vertical strip of width `spacing`, strips centred on x = W − k·spacing.
-  std::map<std::int64_t, std::size_t> top;  // key −k: ascending x, the toe first
+/// Top particle of each vertical strip of width `spacing`, strips centred on x = W − k·spacing;
+/// key −k: ascending x, the toe first.
+std::map<std::int64_t, std::size_t> strip_tops(std::span<const double> x, std::span<const double> y,
+                                               const std::vector<std::size_t>& cluster, double fixed_wall_x,
+                                               double spacing) {
+  std::map<std::int64_t, std::size_t> top;
   for (const std::size_t i : cluster) {
     const auto key = -std::llround((fixed_wall_x - x[i]) / spacing);
     const auto [it, inserted] = top.try_emplace(key, i);
     if (!inserted && y[i] > y[it->second]) it->second = i;
   }
+  return top;
+}
+
+/// Distance from the fixed wall to the toe-most strip at least `thickness` thick (see deposit.h).
+double runout_at_thickness(std::span<const double> x, std::span<const double> y,
+                           const std::map<std::int64_t, std::size_t>& top, double fixed_wall_x, double spacing,
+                           double thickness) {
+  for (const auto& [key, i] : top)  // from the toe
+    if (y[i] + spacing >= thickness) return fixed_wall_x - x[i];
+  return 0.0;
+}
+
+/// Slope angle of the surface between toe and crest (see deposit.h), degrees.
+double repose_angle(std::span<const double> x, std::span<const double> y,
+                    const std::map<std::int64_t, std::size_t>& top, double height) {
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const auto& [key, i] : top) {
     if (y[i] >= repose_band_high * height) break;   // the crest: the fit stops here
@@ -113,7 +129,7 @@ double repose_angle(std::span<const double> x, std::span<const double> y,
 }  // namespace
 
 DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, double fixed_wall_x,
-                               double spacing) {
+                               double spacing, double toe_thickness) {
   if (x.empty() || x.size() != y.size()) {
     throw std::invalid_argument("measure_deposit: x and y must be non-empty and of equal length (got " +
                                 std::to_string(x.size()) + " and " + std::to_string(y.size()) + ")");
@@ -133,7 +149,10 @@ DepositMetrics measure_deposit(std::span<const double> x, std::span<const double
     min_x = std::min(min_x, x[i]);
     max_y = std::max(max_y, y[i]);
   }
-  return {fixed_wall_x - min_x, max_y, repose_angle(x, y, cluster, fixed_wall_x, spacing, max_y)};
+  const auto top = strip_tops(x, y, cluster, fixed_wall_x, spacing);
+  return {fixed_wall_x - min_x, max_y, repose_angle(x, y, top, max_y),
+          toe_thickness > 0.0 ? runout_at_thickness(x, y, top, fixed_wall_x, spacing, toe_thickness)
+                              : std::numeric_limits<double>::quiet_NaN()};
 }
 
 }  // namespace soilsph::sph

@@ -14,6 +14,12 @@
 ///   and the crest (the first strip reaching 90 % of height_m), keeping those higher than 10 % of
 ///   height_m so that the thin toe tail and the rounded shoulder do not bias it. If that leaves
 ///   fewer than two points the face is vertical and the angle is 90°.
+/// - runout_thick_m (with a toe thickness t > 0): W − x of the toe-most surface strip whose
+///   deposit is at least t thick, the thickness of a strip being its top particle's y + spacing
+///   (the floor surface lies half a spacing below the first row, the free surface half a spacing
+///   above the top particle). Unlike runout_m it ignores a toe thinner than t, whose length depends
+///   on the resolution (a layer one or two particles thick); the collapse takes t = H0/10, which
+///   every shipped resolution resolves with at least two particles (docs/sph.md, Resolution).
 #include <span>
 
 namespace soilsph::sph {
@@ -21,6 +27,7 @@ namespace soilsph::sph {
 /// Runout, height and repose angle of a deposit (SI, degrees).
 struct DepositMetrics {
   double runout_m, height_m, repose_angle_deg;
+  double runout_thick_m;  ///< NaN unless a toe thickness is given
 };
 
 /// Link distance between particles of one deposit, in particle spacings.
@@ -29,9 +36,9 @@ inline constexpr double deposit_link_spacings = 2.0;
 inline constexpr double repose_band_low = 0.1, repose_band_high = 0.9;
 
 /// x, y of the soil particles; fixed_wall_x = W; spacing = initial particle spacing (for robust
-/// measures that ignore isolated, splashed particles). Throws std::invalid_argument on empty or
-/// mismatched input or a non-positive spacing.
+/// measures that ignore isolated, splashed particles); toe_thickness t for runout_thick_m (0: not
+/// measured). Throws std::invalid_argument on empty or mismatched input or a non-positive spacing.
 DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, double fixed_wall_x,
-                               double spacing);
+                               double spacing, double toe_thickness = 0.0);
 
 }  // namespace soilsph::sph

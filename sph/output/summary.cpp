@@ -81,6 +81,7 @@ std::string summary_json(const Summary& s) {
   field("runout_m", number(s.runout_m));
   field("height_m", number(s.height_m));
   field("repose_angle_deg", number(s.repose_angle_deg));
+  field("runout_thick_m", number(s.runout_thick_m));
   field("max_speed_end", number(s.max_speed_end));
   field("kinetic_energy_end", number(s.kinetic_energy_end));
   field("particle_spacing", number(s.particle_spacing));

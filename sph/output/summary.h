@@ -16,6 +16,7 @@ struct Summary {
          repose_angle_deg = 0, max_speed_end = 0, kinetic_energy_end = 0, particle_spacing = 0,
          smoothing_ratio = 0, time_step = 0, smallest_time_step = 0, largest_time_step = 0;
   int threads = 1;
+  double runout_thick_m = 0;          ///< runout where the deposit is H0/10 thick (analysis/deposit.h)
   bool stopped_at_rest = false;      ///< the run ended at rest before the scene's end time
   std::size_t guard_corrections = 0;  ///< times the wall guard acted (0 in a sound run)
 };
