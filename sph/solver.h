@@ -69,7 +69,7 @@ struct Workspace {
   std::size_t moving = 0;       ///< soil particles faster than the rest speed after the last step
   bool search_next = true;      ///< the next step searches neighbours (Verlet skin exceeded)
   std::size_t guard_corrections = 0;  ///< times the wall guard had to act (expected 0)
-  StepFailure failure;                ///< a failed constitutive update
+  StepFailure failure;                ///< a failed constitutive update, and the split ones
   std::exception_ptr error;           ///< a failed neighbour search
 
   Workspace(const SolverSetup& setup, const Particles& p)
@@ -181,6 +181,7 @@ struct RunStatistics {
   double smallest_time_step = 0.0, largest_time_step = 0.0;  ///< s
   std::size_t neighbour_searches = 0;
   std::size_t workspace_bytes = 0;  ///< neighbour list and step buffers
+  std::size_t split_stress_updates = 0;  ///< updates redone in parts (stages/stress_update.h)
 };
 
 /// Chooses each step's length: the CFL step from the current state, shortened so that the run lands
@@ -288,6 +289,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   stats.wall_seconds = elapsed.count();
   stats.guard_corrections = work.guard_corrections;
   stats.neighbour_searches = work.neighbours.searches();
+  stats.split_stress_updates = work.failure.split_updates();
   stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
                           3 * p.size() * sizeof(double);  // the *_next buffers
   return stats;

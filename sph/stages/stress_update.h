@@ -8,6 +8,7 @@
 /// A scheme that cannot complete an update throws; an exception must not leave an OpenMP region
 /// (that terminates the program), so a failure is kept in a StepFailure, the first one wins, and
 /// the caller reports it after the loop as an IntegrationError naming the particle.
+#include <atomic>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -18,7 +19,8 @@
 
 namespace soilsph::sph {
 
-/// The first failure of a parallel loop, shared by its threads.
+/// The stress updates of one step, shared by the threads of a parallel loop: the first failure
+/// (the first one wins) and how many updates had to be split.
 class StepFailure {
  public:
   void record(const std::string& message) {
@@ -28,10 +30,41 @@ class StepFailure {
   bool failed() const { return message_.has_value(); }
   const std::string& message() const { return *message_; }
   void clear() { message_.reset(); }
+  void note_split() { split_updates_.fetch_add(1, std::memory_order_relaxed); }
+  std::size_t split_updates() const { return split_updates_.load(std::memory_order_relaxed); }
 
  private:
   std::optional<std::string> message_;
+  std::atomic<std::size_t> split_updates_{0};
 };
+
+/// Most halvings of a step's increment whose update fails (up to 2^4 parts), as the material-point
+/// driver does (verification/driver/mixed_control.h).
+inline constexpr int kMaxStressSplits = 4;
+
+/// The model's update for the increments (dε, dω); one that throws IntegrationError (an implicit
+/// return that does not converge for a very coarse or degenerate increment: a free-surface particle
+/// with a vanishing p_c) is redone as 2, 4, … 2^kMaxStressSplits equal parts. The rotation of the
+/// parts composes to the whole one to second order. Throws if even the smallest parts fail.
+template <class Model>
+State update_splitting_on_failure(const Model& model, const State& state, const Mat3& strain, const Mat3& spin,
+                                  StepFailure& log) {
+  try {
+    return model.update(state, strain, spin);
+  } catch (const IntegrationError&) {
+    for (int halvings = 1;; ++halvings) {
+      const int parts = 1 << halvings;
+      try {
+        State s = state;
+        for (int k = 0; k < parts; ++k) s = model.update(s, strain / parts, spin / parts);
+        log.note_split();
+        return s;
+      } catch (const IntegrationError&) {
+        if (halvings == kMaxStressSplits) throw;
+      }
+    }
+  }
+}
 
 /// σ^{n+1} of soil particle i for the velocity gradient L over dt, and its in-plane stress copied
 /// for the momentum stage; a failed update is recorded and leaves the particle unchanged.
@@ -39,7 +72,7 @@ template <class Model>
 void update_particle_stress(const Model& model, Particles& p, std::size_t i, const VelocityGradient& L,
                             double dt, StepFailure& failure) {
   try {
-    p.state[i] = model.update(p.state[i], L.strain_rate() * dt, L.spin_rate() * dt);
+    p.state[i] = update_splitting_on_failure(model, p.state[i], L.strain_rate() * dt, L.spin_rate() * dt, failure);
   } catch (const std::exception& e) {
     failure.record("stress update of soil particle " + std::to_string(i) + ": " + e.what());
     return;

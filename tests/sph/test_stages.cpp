@@ -165,3 +165,36 @@ TEST_CASE("a failed stress update is an error naming the particle, not a crash i
   CHECK_THROWS_WITH(update_stress(FailingModel{}, p, 1e-5),
                     Catch::Matchers::Contains("soil particle 17: no convergence"));
 }
+
+namespace {
+/// A model whose update fails for strain increments larger than `largest` (as an implicit return
+/// that does not converge for a coarse increment) and otherwise adds the increment to the stress.
+struct CoarseFailingModel {
+  double largest;
+  State update(const State& state, const Mat3& strain, const Mat3&) const {
+    if (strain.norm() > largest) throw IntegrationError("no convergence");
+    State s = state;
+    s.stress += strain;
+    return s;
+  }
+};
+}  // namespace
+
+TEST_CASE("a failed stress update is redone in 2, 4, ... 16 parts before it counts as a failure",
+          "[sph][stress]") {
+  Mat3 strain = Mat3::Zero();
+  strain(0, 0) = 1.0;
+  StepFailure log;
+  // Fails whole, succeeds in 4 parts (each 0.25): the parts add up to the whole increment.
+  const State s = update_splitting_on_failure(CoarseFailingModel{0.3}, State{}, strain, Mat3::Zero(), log);
+  CHECK(s.stress(0, 0) == Approx(1.0).epsilon(1e-15));
+  CHECK(log.split_updates() == 1);
+  CHECK_FALSE(log.failed());
+  // 16 parts of 1/16 still too large: the error is passed on.
+  CHECK_THROWS_AS(update_splitting_on_failure(CoarseFailingModel{0.05}, State{}, strain, Mat3::Zero(), log),
+                  IntegrationError);
+  CHECK(log.split_updates() == 1);
+  // An update that succeeds whole is not counted.
+  update_splitting_on_failure(CoarseFailingModel{2.0}, State{}, strain, Mat3::Zero(), log);
+  CHECK(log.split_updates() == 1);
+}
