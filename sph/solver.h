@@ -184,8 +184,10 @@ struct RunStatistics {
   std::size_t split_stress_updates = 0;  ///< updates redone in parts (stages/stress_update.h)
 };
 
-/// Chooses each step's length: the CFL step from the current state, shortened so that the run lands
-/// exactly on every frame time and on the end time (never below half a CFL step before one).
+/// Chooses each step's length: the CFL step from the current state, shortened only to land exactly
+/// on the end time (never below half a CFL step before it). Frames are written at the first step
+/// that reaches within half a step of each frame time, not by shortening steps onto it, so that
+/// the output settings cannot change the solution.
 class StepClock {
  public:
   explicit StepClock(const SolverSetup& setup) : setup_(setup), next_frame_(setup.frame_interval) {}
@@ -194,21 +196,18 @@ class StepClock {
   /// The length of the next step for the current sound speed and largest speed.
   double next_step(double sound_speed, double max_speed) {
     cfl_dt_ = cfl_time_step(setup_.cfl, setup_.kernel.smoothing_length(), sound_speed, max_speed);
-    const double target = std::min(next_frame_, setup_.end_time), remaining = target - t_;
+    const double remaining = setup_.end_time - t_;
     lands_ = cfl_dt_ >= remaining * (1.0 - 1e-12);
     dt_ = lands_ ? remaining : (cfl_dt_ > 0.5 * remaining ? 0.5 * remaining : cfl_dt_);
     return dt_;
   }
   /// The CFL step of the last next_step(), before any shortening.
   double cfl_step() const { return cfl_dt_; }
-  /// Advances the time by the step taken; true if it landed on a frame time or the end time.
+  /// Advances the time by the step taken; true if a frame is due at the new time.
   bool step_taken() {
-    if (!lands_) {
-      t_ += dt_;
-      return false;
-    }
-    t_ = std::min(next_frame_, setup_.end_time);  // exactly, without accumulated round-off
-    while (next_frame_ <= t_ * (1.0 + 1e-12)) next_frame_ += setup_.frame_interval;
+    t_ = lands_ ? setup_.end_time : t_ + dt_;  // the end exactly, without accumulated round-off
+    if (t_ < next_frame_ - 0.5 * dt_ && !lands_) return false;
+    while (next_frame_ <= t_ + 0.5 * dt_) next_frame_ += setup_.frame_interval;
     return true;
   }
   bool at_end() const { return t_ >= setup_.end_time; }
