@@ -70,6 +70,23 @@ def write_csv(rows, path):
         writer.writerows(rows)
 
 
+DEPOSIT_HEADER = "runout (cm) | runout where H0/10 thick (cm) | height (cm) | repose (°) | t end (s) | steps | wall (s)"
+
+
+def deposit_cells(r):
+    """The deposit and cost of one run, as the cells under DEPOSIT_HEADER (7 of them)."""
+    if r["status"] != "ok":
+        return f"failed: {r['error']} |" + " |" * 6
+    return (f"{100 * r['runout_m']:.2f} | {100 * r['runout_thick_m']:.2f} | {100 * r['height_m']:.2f} "
+            f"| {r['repose_angle_deg']:.1f} | {r['end_time']:.3f} | {r['steps']} | {r['wall_seconds']:.1f}")
+
+
+def write_markdown(path, title, header, lines):
+    text = "\n".join([f"# {title}", "", f"| {header} |", "|" + "---|" * (header.count("|") + 1)] + lines) + "\n"
+    path.write_text(text)
+    print(text)
+
+
 def richardson(h, v):
     """Observed order and extrapolated value from three spacings h[0] > h[1] > h[2] with ratio 2, or None
     when the differences do not shrink monotonically."""
@@ -161,19 +178,13 @@ def cfl(args):
                               {"model_label": label, "integrator_choice": integrator, "cfl": c}))
     rows = run_all(specs, out, args.jobs)
     write_csv(rows, out / "cfl.csv")
-    lines = [f"# CFL sweep at {args.spacing:g} mm (to rest, at most 2 s)", "",
-             "| model | integrator | cfl | stable | runout (cm) | height (cm) | repose (°) | t rest (s) | steps | wall (s) |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+    lines = []
     for r in rows:
         stable = r["status"] == "ok" and r.get("guard_corrections", 1) == 0 and r.get("stopped_at_rest")
-        if r["status"] != "ok":
-            lines.append(f"| {r['model_label']} | {r['integrator_choice']} | {r['cfl']:g} | no: {r['error']} | | | | | | |")
-            continue
-        lines.append(f"| {r['model_label']} | {r['integrator']} | {r['cfl']:g} | {'yes' if stable else 'NO'} "
-                     f"| {100 * r['runout_m']:.2f} | {100 * r['height_m']:.2f} | {r['repose_angle_deg']:.1f} "
-                     f"| {r['end_time']:.3f} | {r['steps']} | {r['wall_seconds']:.1f} |")
-    (out / "cfl.md").write_text("\n".join(lines) + "\n")
-    print("\n".join(lines))
+        lines.append(f"| {r['model_label']} | {r['integrator_choice']} | {r['cfl']:g} | {'yes' if stable else 'NO'} "
+                     f"| {deposit_cells(r)} |")
+    write_markdown(out / "cfl.md", f"CFL sweep at {args.spacing:g} mm (to rest, at most 2 s)",
+                   "model | integrator | cfl | stable | " + DEPOSIT_HEADER, lines)
 
 
 def integrator(args):
@@ -184,17 +195,9 @@ def integrator(args):
              for label, scene in SCENES.items() for name in ("explicit", "substep", "implicit")]
     rows = run_all(specs, out, args.jobs)
     write_csv(rows, out / "integrator.csv")
-    lines = [f"# Stress integrator at {args.spacing:g} mm (to rest or 1 s)", "",
-             "| model | integrator | runout (cm) | height (cm) | repose (°) | t end (s) | wall (s) |",
-             "|---|---|---|---|---|---|---|"]
-    for r in rows:
-        if r["status"] == "ok":
-            lines.append(f"| {r['model_label']} | {r['integrator']} | {100 * r['runout_m']:.2f} | {100 * r['height_m']:.2f} "
-                         f"| {r['repose_angle_deg']:.1f} | {r['end_time']:.3f} | {r['wall_seconds']:.1f} |")
-        else:
-            lines.append(f"| {r['model_label']} | {r['run']} | failed: {r['error']} | | | | |")
-    (out / "integrator.md").write_text("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    lines = [f"| {r['model_label']} | {r['run'].split('-')[-1]} | {deposit_cells(r)} |" for r in rows]
+    write_markdown(out / "integrator.md", f"Stress integrator at {args.spacing:g} mm (to rest or 1 s)",
+                   "model | integrator | " + DEPOSIT_HEADER, lines)
 
 
 def main():

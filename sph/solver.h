@@ -5,13 +5,14 @@
 /// templates on the constitutive model: the caller chooses the model once (std::visit over the
 /// Material) and the per-particle update is a direct, inlinable call.
 ///
-/// Threading: `run` opens ONE OpenMP parallel region for the whole run. A step is four work-shared
-/// loops over particles, each fusing every stage that reads the same data (below), plus one short
-/// serial close; that is five barriers a step instead of a fork and a join per stage. A barrier is
-/// the only cost of a second thread, and it is what a sleeping (passive) or descheduled thread makes
-/// expensive, so the fewer the better on an idle and on a busy machine alike. Called outside a
-/// parallel region (the tests), `advance` does the same work on one thread. Results do not depend on
-/// the thread count: every loop writes per particle, reductions are serial.
+/// Threading: `run` opens one OpenMP parallel region per chunk of steps (about 50 ms), with the
+/// thread count a ThreadTuner picks for it. A step is four work-shared loops over particles, each
+/// fusing every stage that reads the same data (below), plus one short serial close: five barriers
+/// a step instead of a fork and a join per stage. A barrier is the only cost of a second thread,
+/// and it is what a sleeping (passive) or descheduled thread makes expensive, so the fewer the
+/// better on an idle and on a busy machine alike. Called outside a parallel region (the tests),
+/// `advance` does the same work on one thread. Results do not depend on the thread count: every
+/// loop writes per particle, reductions are serial.
 #include <omp.h>
 
 #include <algorithm>
@@ -106,10 +107,11 @@ void close_step(const Model& model, const SolverSetup& setup, Particles& p, Work
 }  // namespace detail
 
 /// One leapfrog step of length dt from t^n to t^{n+1} (stages/leapfrog.h), then `on_closed()` on
-/// one thread. Call from every thread of a parallel region, or outside one.
+/// one thread; `fallback` takes over a failed stress update (stages/stress_update.h). Call from
+/// every thread of a parallel region, or outside one.
 template <class Model, class OnClosed>
-void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt,
-             OnClosed&& on_closed) {
+void advance(const Model& model, const Model& fallback, const SolverSetup& setup, Particles& p, Workspace& work,
+             double dt, OnClosed&& on_closed) {
   NeighbourList& nl = work.neighbours;
   const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
   const auto& m = setup.momentum;
@@ -153,7 +155,7 @@ void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspa
       const auto i = static_cast<std::size_t>(s);
       const KinematicRates rates =
           kinematic_rates_of(p, nl, i, work.vx_next, work.vy_next, setup.velocity_gradient_correction);
-      update_particle_stress(model, p, i, rates.L, dt, work.failure);
+      update_particle_stress(model, fallback, p, i, rates.L, dt, work.failure);
       work.density_next[i] = p.density[i] + dt * rates.density_rate;
       p.x[i] += dt * work.vx_next[i];
       p.y[i] += dt * work.vy_next[i];
@@ -166,10 +168,10 @@ void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspa
   }
 }
 
-/// One step without a callback.
+/// One step without a callback, the model's own fallback built for it (tests).
 template <class Model>
 void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
-  advance(model, setup, p, work, dt, [] {});
+  advance(model, fallback_model(model), setup, p, work, dt, [] {});
 }
 
 struct RunStatistics {
@@ -230,6 +232,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   Workspace work(setup, p);
+  const Model fallback = fallback_model(model);  // for a failed update (stages/stress_update.h)
   StepClock clock(setup);
   RestWatch rest(setup.rest);
   RunStatistics stats;
@@ -240,10 +243,10 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   stats.smallest_time_step = stats.largest_time_step = clock.cfl_step();
   const auto close = [&] {  // serial, after each step
     try {
-      const std::string when = " (step " + std::to_string(stats.steps + 1) + ", t = " +
-                               std::to_string(clock.time()) + " s)";
-      if (work.failure.failed()) throw IntegrationError(work.failure.message() + when);
-      if (work.error) {
+      if (work.failed()) {
+        const std::string when = " (step " + std::to_string(stats.steps + 1) + ", t = " +
+                                 std::to_string(clock.time()) + " s)";
+        if (work.failure.failed()) throw IntegrationError(work.failure.message() + when);
         try {
           std::rethrow_exception(work.error);
         } catch (const std::exception& e) {
@@ -274,7 +277,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
     const std::size_t first = stats.steps, steps_now = tuner.trying() ? std::max<std::size_t>(chunk / 4, 4) : chunk;
 #pragma omp parallel num_threads(tuner.threads())
     for (std::size_t k = 0; k < steps_now && !stop; ++k)  // `stop` is read after the closing barrier
-      advance(model, setup, p, work, dt, close);
+      advance(model, fallback, setup, p, work, dt, close);
     const std::chrono::duration<double> seconds = Clock::now() - chunk_start;
     const auto steps = static_cast<double>(stats.steps - first);
     tuner.record(seconds.count(), steps * static_cast<double>(p.soil_count));

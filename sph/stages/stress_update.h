@@ -7,7 +7,8 @@
 ///
 /// A scheme that cannot complete an update throws; an exception must not leave an OpenMP region
 /// (that terminates the program), so a failure is kept in a StepFailure, the first one wins, and
-/// the caller reports it after the loop as an IntegrationError naming the particle.
+/// the caller reports it after the loop as an IntegrationError naming the particle. Before that, a
+/// failed update is split and then handed to a fallback scheme (update_splitting_on_failure).
 #include <atomic>
 #include <optional>
 #include <stdexcept>
@@ -42,37 +43,55 @@ class StepFailure {
 /// driver does (verification/driver/mixed_control.h).
 inline constexpr int kMaxStressSplits = 4;
 
-/// The model's update for the increments (dε, dω); one that throws IntegrationError (an implicit
-/// return that does not converge for a very coarse or degenerate increment: a free-surface particle
-/// with a vanishing p_c) is redone as 2, 4, … 2^kMaxStressSplits equal parts. The rotation of the
-/// parts composes to the whole one to second order. Throws if even the smallest parts fail.
+/// The model a failed update falls back on: the same parameters with `substep` (error-controlled
+/// substepping, which does not rely on a Newton iteration) for a model with a choice of scheme;
+/// the model itself otherwise. Built once per run.
 template <class Model>
-State update_splitting_on_failure(const Model& model, const State& state, const Mat3& strain, const Mat3& spin,
-                                  StepFailure& log) {
+Model fallback_model(const Model& model) {
+  if constexpr (requires { model.params().integrator; }) {
+    auto params = model.params();
+    params.integrator = Integrator::Substep;
+    return Model(params);
+  } else {
+    return model;
+  }
+}
+
+/// The model's update for the increments (dε, dω). One that throws IntegrationError (an implicit
+/// return that does not converge for a coarse or degenerate increment: a free-surface particle with
+/// a vanishing p_c) is redone as 2, 4, … 2^kMaxStressSplits equal parts, as the material-point
+/// driver does, and then once with the fallback model; the rotation of the parts composes to the
+/// whole one to second order. Throws if all of them fail.
+template <class Model>
+State update_splitting_on_failure(const Model& model, const Model& fallback, const State& state, const Mat3& strain,
+                                  const Mat3& spin, StepFailure& log) {
   try {
     return model.update(state, strain, spin);
   } catch (const IntegrationError&) {
-    for (int halvings = 1;; ++halvings) {
-      const int parts = 1 << halvings;
-      try {
-        State s = state;
-        for (int k = 0; k < parts; ++k) s = model.update(s, strain / parts, spin / parts);
-        log.note_split();
-        return s;
-      } catch (const IntegrationError&) {
-        if (halvings == kMaxStressSplits) throw;
-      }
+  }
+  for (int halvings = 1; halvings <= kMaxStressSplits; ++halvings) {
+    const int parts = 1 << halvings;
+    try {
+      State s = state;
+      for (int k = 0; k < parts; ++k) s = model.update(s, strain / parts, spin / parts);
+      log.note_split();
+      return s;
+    } catch (const IntegrationError&) {
     }
   }
+  State s = fallback.update(state, strain, spin);
+  log.note_split();
+  return s;
 }
 
 /// σ^{n+1} of soil particle i for the velocity gradient L over dt, and its in-plane stress copied
 /// for the momentum stage; a failed update is recorded and leaves the particle unchanged.
 template <class Model>
-void update_particle_stress(const Model& model, Particles& p, std::size_t i, const VelocityGradient& L,
-                            double dt, StepFailure& failure) {
+void update_particle_stress(const Model& model, const Model& fallback, Particles& p, std::size_t i,
+                            const VelocityGradient& L, double dt, StepFailure& failure) {
   try {
-    p.state[i] = update_splitting_on_failure(model, p.state[i], L.strain_rate() * dt, L.spin_rate() * dt, failure);
+    p.state[i] = update_splitting_on_failure(model, fallback, p.state[i], L.strain_rate() * dt,
+                                             L.spin_rate() * dt, failure);
   } catch (const std::exception& e) {
     failure.record("stress update of soil particle " + std::to_string(i) + ": " + e.what());
     return;
@@ -87,10 +106,11 @@ template <class Model>
 void update_stress(const Model& model, Particles& p, double dt) {
   const auto n = static_cast<std::ptrdiff_t>(p.soil_count);
   StepFailure failure;
+  const Model fallback = fallback_model(model);
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t s = 0; s < n; ++s) {
     const auto i = static_cast<std::size_t>(s);
-    update_particle_stress(model, p, i, stored_velocity_gradient(p, i), dt, failure);
+    update_particle_stress(model, fallback, p, i, stored_velocity_gradient(p, i), dt, failure);
   }
   if (failure.failed()) throw IntegrationError(failure.message());
 }

@@ -180,21 +180,31 @@ struct CoarseFailingModel {
 };
 }  // namespace
 
-TEST_CASE("a failed stress update is redone in 2, 4, ... 16 parts before it counts as a failure",
+TEST_CASE("a failed stress update is redone in 2, 4, ... 16 parts, then by the fallback, before it fails",
           "[sph][stress]") {
   Mat3 strain = Mat3::Zero();
   strain(0, 0) = 1.0;
   StepFailure log;
+  const CoarseFailingModel fails{0.0}, succeeds{2.0};
   // Fails whole, succeeds in 4 parts (each 0.25): the parts add up to the whole increment.
-  const State s = update_splitting_on_failure(CoarseFailingModel{0.3}, State{}, strain, Mat3::Zero(), log);
+  const State s = update_splitting_on_failure(CoarseFailingModel{0.3}, fails, State{}, strain, Mat3::Zero(), log);
   CHECK(s.stress(0, 0) == Approx(1.0).epsilon(1e-15));
   CHECK(log.split_updates() == 1);
   CHECK_FALSE(log.failed());
-  // 16 parts of 1/16 still too large: the error is passed on.
-  CHECK_THROWS_AS(update_splitting_on_failure(CoarseFailingModel{0.05}, State{}, strain, Mat3::Zero(), log),
+  // 16 parts of 1/16 still too large: the fallback does it whole.
+  const State f = update_splitting_on_failure(CoarseFailingModel{0.05}, succeeds, State{}, strain, Mat3::Zero(), log);
+  CHECK(f.stress(0, 0) == 1.0);
+  CHECK(log.split_updates() == 2);
+  // The fallback fails too: the error is passed on.
+  CHECK_THROWS_AS(update_splitting_on_failure(CoarseFailingModel{0.05}, fails, State{}, strain, Mat3::Zero(), log),
                   IntegrationError);
-  CHECK(log.split_updates() == 1);
   // An update that succeeds whole is not counted.
-  update_splitting_on_failure(CoarseFailingModel{2.0}, State{}, strain, Mat3::Zero(), log);
-  CHECK(log.split_updates() == 1);
+  update_splitting_on_failure(succeeds, fails, State{}, strain, Mat3::Zero(), log);
+  CHECK(log.split_updates() == 2);
+}
+
+TEST_CASE("the fallback of a model with a choice of scheme is its substep twin", "[sph][stress]") {
+  ModifiedCamClay::Params params;
+  params.integrator = Integrator::Implicit;
+  CHECK(fallback_model(ModifiedCamClay(params)).integrator() == Integrator::Substep);
 }
