@@ -183,7 +183,7 @@ struct RunStatistics {
   double smallest_time_step = 0.0, largest_time_step = 0.0;  ///< s
   std::size_t neighbour_searches = 0;
   std::size_t workspace_bytes = 0;  ///< neighbour list and step buffers
-  std::size_t split_stress_updates = 0;  ///< updates redone in parts (stages/stress_update.h)
+  std::size_t fallback_stress_updates = 0;  ///< updates whose first attempt failed (stages/stress_update.h)
 };
 
 /// Chooses each step's length: the CFL step from the current state, shortened only to land exactly
@@ -291,7 +291,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   stats.wall_seconds = elapsed.count();
   stats.guard_corrections = work.guard_corrections;
   stats.neighbour_searches = work.neighbours.searches();
-  stats.split_stress_updates = work.failure.split_updates();
+  stats.fallback_stress_updates = work.failure.fallback_updates();
   stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
                           3 * p.size() * sizeof(double);  // the *_next buffers
   return stats;

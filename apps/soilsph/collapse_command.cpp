@@ -98,14 +98,14 @@ void run_collapse(const CollapseOptions& o) {
   s.largest_time_step = stats.largest_time_step;
   s.stopped_at_rest = stats.stopped_at_rest;
   s.guard_corrections = stats.guard_corrections;
-  s.split_stress_updates = stats.split_stress_updates;
+  s.fallback_stress_updates = stats.fallback_stress_updates;
   s.threads = tuner.threads();
   write_summary_json(std::filesystem::path(o.out) / "summary.json", s);
   if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
   std::cout << "runout " << s.runout_m << " m (" << s.runout_thick_m << " m where H0/10 thick), height " << s.height_m << " m, repose angle "
             << s.repose_angle_deg << " deg, max speed at end " << s.max_speed_end << " m/s, wall guard acted "
-            << stats.guard_corrections << " times, " << stats.split_stress_updates
-            << " stress updates split after a failed return\n"
+            << stats.guard_corrections << " times, " << stats.fallback_stress_updates
+            << " stress updates needed a fallback (stages/stress_update.h)\n"
             << s.wall_seconds << " s wall, " << s.particle_steps_per_second << " particle-steps/s; output in "
             << o.out << "/\n";
 }

@@ -91,7 +91,7 @@ std::string summary_json(const Summary& s) {
   field("largest_time_step", number(s.largest_time_step));
   field("stopped_at_rest", s.stopped_at_rest ? "true" : "false");
   field("guard_corrections", std::to_string(s.guard_corrections));
-  field("split_stress_updates", std::to_string(s.split_stress_updates));
+  field("fallback_stress_updates", std::to_string(s.fallback_stress_updates));
   return out + "\n}\n";
 }
 

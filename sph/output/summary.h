@@ -19,7 +19,7 @@ struct Summary {
   double runout_thick_m = 0;          ///< runout where the deposit is H0/10 thick (analysis/deposit.h)
   bool stopped_at_rest = false;      ///< the run ended at rest before the scene's end time
   std::size_t guard_corrections = 0;  ///< times the wall guard acted (0 in a sound run)
-  std::size_t split_stress_updates = 0;  ///< stress updates redone in parts after a failed return
+  std::size_t fallback_stress_updates = 0;  ///< stress updates whose first attempt failed (split, substep or stress-free)
 };
 
 /// Writes the summary as one flat JSON object (numbers in shortest round-trip form, non-finite
