@@ -3,7 +3,7 @@
 `soilsph collapse` runs whose summary.json files are gathered into one CSV and one figure.
 Run with Debian's /usr/bin/python3 (matplotlib, numpy).
 
-    scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--jobs 2]
+    scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--jobs 2] [--reuse]
     scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
 
@@ -36,9 +36,12 @@ MEASURES = (("runout_m", "runout", 100.0, "cm"), ("runout_thick_m", "runout wher
             ("height_m", "height", 100.0, "cm"), ("repose_angle_deg", "repose angle", 1.0, "deg"))
 
 
-def run(name, scene, overrides, out):
-    """One `soilsph collapse` run into out/name; returns its summary with the run's name and status."""
+def run(name, scene, overrides, out, reuse=False):
+    """One `soilsph collapse` run into out/runs/name; returns its summary with the run's name and status.
+    With `reuse`, a run whose folder already holds a summary.json is not run again (resume a study)."""
     folder = out / "runs" / name
+    if reuse and (folder / "summary.json").exists():
+        return {"run": name, "status": "ok", **json.loads((folder / "summary.json").read_text())}
     command = [str(SOILSPH), "collapse", str(ROOT / "data" / "scenes" / f"{scene}.toml"), "--out", str(folder),
                "--threads", "1", "--set", 'output.fields=["velocity","layer"]', "--set", "output.frame_interval=0.05"]
     for o in overrides:
@@ -54,9 +57,9 @@ def run(name, scene, overrides, out):
     return summary
 
 
-def run_all(specs, out, jobs):
+def run_all(specs, out, jobs, reuse=False):
     with ThreadPoolExecutor(max_workers=jobs) as pool:
-        return list(pool.map(lambda s: {**s[3], **run(*s[:3], out)}, specs))
+        return list(pool.map(lambda s: {**s[3], **run(*s[:3], out, reuse)}, specs))
 
 
 def write_csv(rows, path):
@@ -89,12 +92,13 @@ def write_markdown(path, title, header, lines):
 
 def richardson(h, v):
     """Observed order and extrapolated value from three spacings h[0] > h[1] > h[2] with ratio 2, or None
-    when the differences do not shrink monotonically."""
+    when the differences do not shrink monotonically at an order of at least ½ (below that the
+    extrapolation d2/(2^p − 1) is dominated by noise)."""
     d1, d2 = v[1] - v[0], v[2] - v[1]
     if d1 == 0 or d2 == 0 or d1 * d2 < 0 or abs(d2) >= abs(d1):
         return None
     order = math.log(abs(d1 / d2)) / math.log(h[0] / h[1])
-    return order, v[2] + d2 / (2 ** order - 1)
+    return (order, v[2] + d2 / (2 ** order - 1)) if order >= 0.5 else None
 
 
 def resolution(args):
@@ -103,7 +107,7 @@ def resolution(args):
     specs = [(f"{scene}-{s:g}mm", scene, [f"scene.particle_spacing={s / 1000}"] + args.set,
               {"model_label": label, "spacing_mm": s})
              for s in sorted(spacings) for label, scene in SCENES.items()]  # finest first: longest first
-    rows = run_all(specs, out, args.jobs)
+    rows = run_all(specs, out, args.jobs, args.reuse)
     write_csv(rows, out / "resolution.csv")
     header = " | ".join(f"{name} ({unit})" for _, name, _, unit in MEASURES)
     lines = ["# Resolution study (soilsph collapse, shipped scenes, to rest or 1 s)", "",
@@ -176,7 +180,7 @@ def cfl(args):
                     overrides.append(f'material.integrator="{integrator}"')
                 specs.append((f"{scene}-{integrator}-cfl{c:g}", scene, overrides,
                               {"model_label": label, "integrator_choice": integrator, "cfl": c}))
-    rows = run_all(specs, out, args.jobs)
+    rows = run_all(specs, out, args.jobs, args.reuse)
     write_csv(rows, out / "cfl.csv")
     lines = []
     for r in rows:
@@ -193,7 +197,7 @@ def integrator(args):
                                          f'material.integrator="{name}"'] + args.set,
               {"model_label": label})
              for label, scene in SCENES.items() for name in ("explicit", "substep", "implicit")]
-    rows = run_all(specs, out, args.jobs)
+    rows = run_all(specs, out, args.jobs, args.reuse)
     write_csv(rows, out / "integrator.csv")
     lines = [f"| {r['model_label']} | {r['run'].split('-')[-1]} | {deposit_cells(r)} |" for r in rows]
     write_markdown(out / "integrator.md", f"Stress integrator at {args.spacing:g} mm (to rest or 1 s)",
@@ -209,6 +213,7 @@ def main():
         p.add_argument("--out", default=default_out)
         p.add_argument("--jobs", type=int, default=2, help="runs at a time, one thread each")
         p.add_argument("--set", action="append", default=[], help="extra --set for every run")
+        p.add_argument("--reuse", action="store_true", help="keep runs whose folder has a summary.json")
         if name == "resolution":
             p.add_argument("--spacings", default="4,2,1,0.5", help="particle spacings in mm")
         else:
