@@ -14,30 +14,31 @@ namespace soilsph::sph {
 class Collapse {
  public:
   explicit Collapse(const Scene& scene)
-      : scene_(scene), particles_(build_particles(scene)), setup_((set_geostatic_state(particles_, scene), make_solver_setup(scene))) {}
+      : scene_(scene), particles_(geostatic_particles(scene)), setup_(make_solver_setup(scene)) {}
 
   /// Runs the scene (solver.h, run) and returns its statistics.
   template <class OnFrame, class OnStep>
   const RunStatistics& run(ThreadTuner tuner, OnFrame&& on_frame, OnStep&& on_step) {
     stats_ = std::visit(
         [&](const auto& model) {
-          return sph::run(model, setup_, particles_, std::forward<OnFrame>(on_frame), std::forward<OnStep>(on_step),
-                          tuner);
+          return sph::run(model, setup_, particles_, std::forward<OnFrame>(on_frame),
+                          std::forward<OnStep>(on_step), tuner);
         },
         scene_.material);
     return stats_;
   }
   /// Runs without frames or progress.
   const RunStatistics& run(ThreadTuner tuner) {
-    return run(tuner, [](const Particles&, double) {}, [](double, std::size_t) {});
+    return run(
+        tuner, [](const Particles&, double) {}, [](double, std::size_t) {});
   }
 
   /// Runout, height and repose angle of the soil now, and the runout where the deposit is a tenth
   /// of the column's initial height thick (analysis/deposit.h).
   DepositMetrics deposit() const {
-    return measure_deposit({particles_.x.data(), particles_.soil_count}, {particles_.y.data(), particles_.soil_count},
-                           scene_.geometry.column_width, scene_.geometry.particle_spacing,
-                           0.1 * scene_.geometry.column_height);
+    return measure_deposit({particles_.x.data(), particles_.soil_count},
+                           {particles_.y.data(), particles_.soil_count}, scene_.geometry.column_width,
+                           scene_.geometry.particle_spacing, 0.1 * scene_.geometry.column_height);
   }
 
   const Scene& scene() const { return scene_; }
@@ -46,6 +47,12 @@ class Collapse {
   const RunStatistics& stats() const { return stats_; }
 
  private:
+  static Particles geostatic_particles(const Scene& scene) {
+    Particles p = build_particles(scene);
+    set_geostatic_state(p, scene);
+    return p;
+  }
+
   const Scene& scene_;
   Particles particles_;
   SolverSetup setup_;

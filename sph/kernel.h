@@ -32,7 +32,8 @@ class CubicSpline {
   };
   ValueAndDerivative value_and_derivative(double r) const {
     const double R = r * inv_h_;
-    if (R < 1.0) return {a_d_ * (2.0 / 3.0 - R * R + 0.5 * R * R * R), a_d_ * inv_h_ * (-2.0 * R + 1.5 * R * R)};
+    if (R < 1.0)
+      return {a_d_ * (2.0 / 3.0 - R * R + 0.5 * R * R * R), a_d_ * inv_h_ * (-2.0 * R + 1.5 * R * R)};
     if (R < 2.0) {
       const double s = 2.0 - R;
       return {a_d_ * s * s * s / 6.0, -0.5 * a_d_ * inv_h_ * s * s};

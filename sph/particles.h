@@ -44,9 +44,11 @@ struct Particles {
 
   /// Bytes held by the arrays.
   std::size_t bytes() const {
-    std::size_t b = state.capacity() * sizeof(State) + layer.capacity() * sizeof(int) + boundary_kind.capacity();
-    for (const auto* a : {&x, &y, &vx, &vy, &density, &mass, &sxx, &syy, &sxy, &rxx, &ryy, &rxy, &sxx_rho2, &syy_rho2, &sxy_rho2, &ax, &ay,
-                          &density_rate, &lxx, &lxy, &lyx, &lyy})
+    std::size_t b =
+        state.capacity() * sizeof(State) + layer.capacity() * sizeof(int) + boundary_kind.capacity();
+    for (const auto* a :
+         {&x,   &y,        &vx,       &vy,       &density, &mass, &sxx,          &syy, &sxy, &rxx, &ryy,
+          &rxy, &sxx_rho2, &syy_rho2, &sxy_rho2, &ax,      &ay,   &density_rate, &lxx, &lxy, &lyx, &lyy})
       b += a->capacity() * sizeof(double);
     return b;
   }
@@ -55,7 +57,8 @@ struct Particles {
   void resize(std::size_t soil, std::size_t boundary) {
     soil_count = soil;
     const std::size_t n = soil + boundary;
-    for (auto* a : {&x, &y, &vx, &vy, &density, &mass, &sxx, &syy, &sxy, &rxx, &ryy, &rxy, &sxx_rho2, &syy_rho2, &sxy_rho2})
+    for (auto* a : {&x, &y, &vx, &vy, &density, &mass, &sxx, &syy, &sxy, &rxx, &ryy, &rxy, &sxx_rho2,
+                    &syy_rho2, &sxy_rho2})
       a->assign(n, 0.0);
     for (auto* a : {&ax, &ay, &density_rate, &lxx, &lxy, &lyx, &lyy}) a->assign(soil, 0.0);
     state.assign(soil, State{});

@@ -19,9 +19,9 @@ namespace soilsph::sph {
 
 struct RestCriterion {
   bool enabled = true;
-  double speed = 0.01;      ///< m/s
-  double duration = 0.05;   ///< s
-  double fraction = 0.99;   ///< of the soil particles
+  double speed = 0.01;     ///< m/s
+  double duration = 0.05;  ///< s
+  double fraction = 0.99;  ///< of the soil particles
 
   /// The most particles that may still move faster than `speed` in a mass of `particles`.
   std::size_t movers_allowed(std::size_t particles) const {

@@ -64,13 +64,13 @@ SolverSetup make_solver_setup(const Scene& scene);
 struct Workspace {
   NeighbourList neighbours;
   std::vector<double> vx_next, vy_next, density_next;  ///< v^{n+½}, ρ^{n+1} while a step computes them
-  double previous_dt = 0.0;     ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
-  double sound_speed = 0.0;     ///< current c (m/s)
-  double max_speed = 0.0;       ///< largest soil speed |v^{n+½}| after the last step (m/s)
-  std::size_t moving = 0;       ///< soil particles faster than the rest speed after the last step
-  bool search_next = true;      ///< the next step searches neighbours (Verlet skin exceeded)
+  double previous_dt = 0.0;  ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
+  double sound_speed = 0.0;  ///< current c (m/s)
+  double max_speed = 0.0;    ///< largest soil speed |v^{n+½}| after the last step (m/s)
+  std::size_t moving = 0;    ///< soil particles faster than the rest speed after the last step
+  bool search_next = true;   ///< the next step searches neighbours (Verlet skin exceeded)
   std::size_t guard_corrections = 0;  ///< times the wall guard had to act (expected 0)
-  StepFailure failure;                ///< a failed constitutive update, and the split ones
+  StepFailure failure;                ///< a failed constitutive update, and the count of fallbacks
   std::exception_ptr error;           ///< a failed neighbour search
 
   Workspace(const SolverSetup& setup, const Particles& p)
@@ -110,8 +110,8 @@ void close_step(const Model& model, const SolverSetup& setup, Particles& p, Work
 /// one thread; `fallback` takes over a failed stress update (stages/stress_update.h). Call from
 /// every thread of a parallel region, or outside one.
 template <class Model, class OnClosed>
-void advance(const Model& model, const Model& fallback, const SolverSetup& setup, Particles& p, Workspace& work,
-             double dt, OnClosed&& on_closed) {
+void advance(const Model& model, const Model& fallback, const SolverSetup& setup, Particles& p,
+             Workspace& work, double dt, OnClosed&& on_closed) {
   NeighbourList& nl = work.neighbours;
   const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
   const auto& m = setup.momentum;
@@ -148,8 +148,8 @@ void advance(const Model& model, const Model& fallback, const SolverSetup& setup
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = soil; s < all; ++s)
       mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.vx_next, work.vy_next);
-    // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
-    //    stage of this loop reads x or σ of a neighbour: the pairs hold x_i − x_j).
+      // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
+      //    stage of this loop reads x or σ of a neighbour: the pairs hold x_i − x_j).
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = 0; s < soil; ++s) {
       const auto i = static_cast<std::size_t>(s);
@@ -182,7 +182,7 @@ struct RunStatistics {
   bool stopped_at_rest = false;
   double smallest_time_step = 0.0, largest_time_step = 0.0;  ///< s
   std::size_t neighbour_searches = 0;
-  std::size_t workspace_bytes = 0;  ///< neighbour list and step buffers
+  std::size_t workspace_bytes = 0;          ///< neighbour list and step buffers
   std::size_t fallback_stress_updates = 0;  ///< updates whose first attempt failed (stages/stress_update.h)
 };
 
@@ -244,8 +244,8 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   const auto close = [&] {  // serial, after each step
     try {
       if (work.failed()) {
-        const std::string when = " (step " + std::to_string(stats.steps + 1) + ", t = " +
-                                 std::to_string(clock.time()) + " s)";
+        const std::string when =
+            " (step " + std::to_string(stats.steps + 1) + ", t = " + std::to_string(clock.time()) + " s)";
         if (work.failure.failed()) throw IntegrationError(work.failure.message() + when);
         try {
           std::rethrow_exception(work.error);
@@ -274,7 +274,8 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   std::size_t chunk = 16;
   while (!stop) {
     const auto chunk_start = Clock::now();
-    const std::size_t first = stats.steps, steps_now = tuner.trying() ? std::max<std::size_t>(chunk / 4, 4) : chunk;
+    const std::size_t first = stats.steps,
+                      steps_now = tuner.trying() ? std::max<std::size_t>(chunk / 4, 4) : chunk;
 #pragma omp parallel num_threads(tuner.threads())
     for (std::size_t k = 0; k < steps_now && !stop; ++k)  // `stop` is read after the closing barrier
       advance(model, fallback, setup, p, work, dt, close);
@@ -282,7 +283,8 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
     const auto steps = static_cast<double>(stats.steps - first);
     tuner.record(seconds.count(), steps * static_cast<double>(p.soil_count));
     if (steps > 0.0 && seconds.count() > 0.0)
-      chunk = std::clamp<std::size_t>(static_cast<std::size_t>(kChunkSeconds * steps / seconds.count()), 4, 4096);
+      chunk =
+          std::clamp<std::size_t>(static_cast<std::size_t>(kChunkSeconds * steps / seconds.count()), 4, 4096);
   }
 
   if (error) std::rethrow_exception(error);
@@ -292,8 +294,8 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   stats.guard_corrections = work.guard_corrections;
   stats.neighbour_searches = work.neighbours.searches();
   stats.fallback_stress_updates = work.failure.fallback_updates();
-  stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
-                          3 * p.size() * sizeof(double);  // the *_next buffers
+  stats.workspace_bytes =
+      work.neighbours.bytes_per_particle() * p.size() + 3 * p.size() * sizeof(double);  // the *_next buffers
   return stats;
 }
 

@@ -17,9 +17,9 @@
 namespace soilsph::cli {
 
 namespace {
-/// `--threads auto`: every core (or OMP_NUM_THREADS if less), one thread while the machine is too busy for more to help
-/// (sph/thread_tuner.h); `--threads N`: N throughout, capped at the core count, since more threads
-/// than cores only wait for each other at every barrier of a step.
+/// `--threads auto`: every core (or OMP_NUM_THREADS if less), one thread while the machine is too busy for
+/// more to help (sph/thread_tuner.h); `--threads N`: N throughout, capped at the core count, since more
+/// threads than cores only wait for each other at every barrier of a step.
 sph::ThreadTuner thread_tuner(const std::string& option) {
   const int cores = omp_get_num_procs();
   if (option == "auto") return sph::ThreadTuner(std::min(omp_get_max_threads(), cores), true);
@@ -59,9 +59,10 @@ void run_collapse(const CollapseOptions& o) {
   const SolverSetup& setup = collapse.setup();
   std::cout << o.scene << ": " << model_name(scene.material) << ", " << particles.soil_count << " soil + "
             << particles.boundary_count() << " boundary particles, h = " << setup.kernel.smoothing_length()
-            << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step() << " s at rest, to t = "
-            << scene.geometry.end_time << " s" << (scene.rest.enabled ? " or rest, " : ", ") << tuner.threads()
-            << " thread(s)" << (o.threads == "auto" ? " (auto: fewer while they are slower)" : "") << std::endl;
+            << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step()
+            << " s at rest, to t = " << scene.geometry.end_time << " s"
+            << (scene.rest.enabled ? " or rest, " : ", ") << tuner.threads() << " thread(s)"
+            << (o.threads == "auto" ? " (auto: fewer while they are slower)" : "") << std::endl;
 
   FrameWriter writer(o.out, scene.output.fields);
   FrameBuffers buffers;
@@ -101,11 +102,12 @@ void run_collapse(const CollapseOptions& o) {
   s.fallback_stress_updates = stats.fallback_stress_updates;
   s.threads = tuner.threads();
   write_summary_json(std::filesystem::path(o.out) / "summary.json", s);
-  if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
-  std::cout << "runout " << s.runout_m << " m (" << s.runout_thick_m << " m where H0/10 thick), height " << s.height_m << " m, repose angle "
-            << s.repose_angle_deg << " deg, max speed at end " << s.max_speed_end << " m/s, wall guard acted "
-            << stats.guard_corrections << " times, " << stats.fallback_stress_updates
-            << " stress updates needed a fallback (stages/stress_update.h)\n"
+  if (stats.stopped_at_rest)
+    std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
+  std::cout << "runout " << s.runout_m << " m (" << s.runout_thick_m << " m where H0/10 thick), height "
+            << s.height_m << " m, repose angle " << s.repose_angle_deg << " deg, max speed at end "
+            << s.max_speed_end << " m/s, wall guard acted " << stats.guard_corrections << " times, "
+            << stats.fallback_stress_updates << " stress updates needed a fallback (stages/stress_update.h)\n"
             << s.wall_seconds << " s wall, " << s.particle_steps_per_second << " particle-steps/s; output in "
             << o.out << "/\n";
 }

@@ -99,8 +99,8 @@ std::map<std::int64_t, std::size_t> strip_tops(std::span<const double> x, std::s
 
 /// Distance from the fixed wall to the toe-most strip at least `thickness` thick (see deposit.h).
 double runout_at_thickness(std::span<const double> x, std::span<const double> y,
-                           const std::map<std::int64_t, std::size_t>& top, double fixed_wall_x, double spacing,
-                           double thickness) {
+                           const std::map<std::int64_t, std::size_t>& top, double fixed_wall_x,
+                           double spacing, double thickness) {
   for (const auto& [key, i] : top)  // from the toe
     if (y[i] + spacing >= thickness) return fixed_wall_x - x[i];
   return 0.0;

@@ -58,7 +58,8 @@ double bare_step(std::span<const double> x, std::span<const double> y, const Cub
 }
 }  // namespace
 
-double bare_pair_loop_rate(std::span<const double> x, std::span<const double> y, double h, double min_seconds) {
+double bare_pair_loop_rate(std::span<const double> x, std::span<const double> y, double h,
+                           double min_seconds) {
   using Clock = std::chrono::steady_clock;
   const std::size_t n = x.size();
   Fields f;

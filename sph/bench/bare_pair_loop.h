@@ -14,6 +14,7 @@ namespace soilsph::sph {
 
 /// Particle-steps per second of the bare loop on the points (x, y) with smoothing length h, on the
 /// calling thread, timed over at least `min_seconds` (the median of the repeats).
-double bare_pair_loop_rate(std::span<const double> x, std::span<const double> y, double h, double min_seconds);
+double bare_pair_loop_rate(std::span<const double> x, std::span<const double> y, double h,
+                           double min_seconds);
 
 }  // namespace soilsph::sph

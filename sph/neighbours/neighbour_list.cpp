@@ -48,10 +48,12 @@ void NeighbourList::search(std::span<const double> x, std::span<const double> y,
   for (;;) {
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = 0; s < rows; ++s) {
-      const std::size_t found = search_row(static_cast<std::size_t>(s), x, y, radius * radius, first_boundary);
+      const std::size_t found =
+          search_row(static_cast<std::size_t>(s), x, y, radius * radius, first_boundary);
       if (found > slots_) {  // rare: a compressed cluster; grow with a margin and redo
         std::size_t most = most_candidates_.load(std::memory_order_relaxed);
-        while (found > most && !most_candidates_.compare_exchange_weak(most, found, std::memory_order_relaxed)) {
+        while (found > most &&
+               !most_candidates_.compare_exchange_weak(most, found, std::memory_order_relaxed)) {
         }
       }
     }

@@ -47,7 +47,8 @@ class NeighbourList {
   void search(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel,
               std::size_t first_boundary);
   /// The pairs of particle i within the support, from its candidates (no synchronisation).
-  void fill_row(std::size_t i, std::span<const double> x, std::span<const double> y, const CubicSpline& kernel);
+  void fill_row(std::size_t i, std::span<const double> x, std::span<const double> y,
+                const CubicSpline& kernel);
 
   /// One pair (i, j) within the support.
   struct Pair {

@@ -17,9 +17,10 @@ struct Summary {
          smoothing_ratio = 0, time_step = 0, smallest_time_step = 0, largest_time_step = 0;
   int threads = 1;
   double runout_thick_m = 0;          ///< runout where the deposit is H0/10 thick (analysis/deposit.h)
-  bool stopped_at_rest = false;      ///< the run ended at rest before the scene's end time
+  bool stopped_at_rest = false;       ///< the run ended at rest before the scene's end time
   std::size_t guard_corrections = 0;  ///< times the wall guard acted (0 in a sound run)
-  std::size_t fallback_stress_updates = 0;  ///< stress updates whose first attempt failed (split, substep or stress-free)
+  std::size_t fallback_stress_updates =
+      0;  ///< stress updates whose first attempt failed (split, substep or stress-free)
 };
 
 /// Writes the summary as one flat JSON object (numbers in shortest round-trip form, non-finite

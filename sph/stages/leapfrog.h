@@ -14,6 +14,8 @@
 namespace soilsph::sph {
 
 /// The kick interval from v^{n−½} to v^{n+½}: ½(Δt_{n−1} + Δt_n); Δt_{−1} = 0 at the start.
-inline double kick_interval(double previous_dt, double dt) { return 0.5 * (previous_dt + dt); }
+inline double kick_interval(double previous_dt, double dt) {
+  return 0.5 * (previous_dt + dt);
+}
 
 }  // namespace soilsph::sph

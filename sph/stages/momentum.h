@@ -31,7 +31,8 @@ struct Acceleration {
 /// of a division per pair).
 inline void set_stress_over_density2(Particles& p, std::size_t i) {
   const double inv_rho2 = 1.0 / (p.density[i] * p.density[i]);
-  p.sxx_rho2[i] = p.sxx[i] * inv_rho2, p.syy_rho2[i] = p.syy[i] * inv_rho2, p.sxy_rho2[i] = p.sxy[i] * inv_rho2;
+  p.sxx_rho2[i] = p.sxx[i] * inv_rho2, p.syy_rho2[i] = p.syy[i] * inv_rho2,
+  p.sxy_rho2[i] = p.sxy[i] * inv_rho2;
 }
 
 /// a_i of soil particle i from the current σ/ρ² (set_stress_over_density2), artificial stress,

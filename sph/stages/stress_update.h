@@ -28,11 +28,21 @@ class StepFailure {
 #pragma omp critical(soilsph_step_failure)
     if (!message_) message_ = message;
   }
-  bool failed() const { return message_.has_value(); }
-  const std::string& message() const { return *message_; }
-  void clear() { message_.reset(); }
-  void note_fallback() { fallback_updates_.fetch_add(1, std::memory_order_relaxed); }
-  std::size_t fallback_updates() const { return fallback_updates_.load(std::memory_order_relaxed); }
+  bool failed() const {
+    return message_.has_value();
+  }
+  const std::string& message() const {
+    return *message_;
+  }
+  void clear() {
+    message_.reset();
+  }
+  void note_fallback() {
+    fallback_updates_.fetch_add(1, std::memory_order_relaxed);
+  }
+  std::size_t fallback_updates() const {
+    return fallback_updates_.load(std::memory_order_relaxed);
+  }
 
  private:
   std::optional<std::string> message_;
@@ -69,8 +79,8 @@ inline constexpr double kNegligibleStress = 1e-3;
 /// vanished surface, as SPH soil codes treat a particle that has lost all strength. Otherwise the
 /// error is passed on. Every such update is counted.
 template <class Model>
-State update_splitting_on_failure(const Model& model, const Model& fallback, const State& state, const Mat3& strain,
-                                  const Mat3& spin, StepFailure& log) {
+State update_splitting_on_failure(const Model& model, const Model& fallback, const State& state,
+                                  const Mat3& strain, const Mat3& spin, StepFailure& log) {
   try {
     return model.update(state, strain, spin);
   } catch (const IntegrationError&) {

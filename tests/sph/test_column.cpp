@@ -58,13 +58,14 @@ void check_collapse(const char* name) {
     xmin = std::min(xmin, p.x[i]), xmax = std::max(xmax, p.x[i]), ymin = std::min(ymin, p.y[i]);
   CHECK(xmax <= r.setup.guard.right_wall_x);
   CHECK(ymin >= r.setup.guard.floor_y);
-  CHECK(xmin > 0.04 - 0.25);   // still on the floor
+  CHECK(xmin > 0.04 - 0.25);  // still on the floor
   // At rest before the end time: 99 % of the particles below 1 % of √(2gH) for √(H/g) (sph/rest.h);
   // a few surface grains may still roll.
   CHECK(r.stats.stopped_at_rest);
   CHECK(r.stats.end_time < 1.0);
   std::size_t moving = 0;
-  for (std::size_t i = 0; i < p.soil_count; ++i) moving += std::hypot(p.vx[i], p.vy[i]) > 0.01 * std::sqrt(2 * 9.81 * 0.06);
+  for (std::size_t i = 0; i < p.soil_count; ++i)
+    moving += std::hypot(p.vx[i], p.vy[i]) > 0.01 * std::sqrt(2 * 9.81 * 0.06);
   CHECK(moving <= p.soil_count / 100);
   const DepositMetrics d =
       measure_deposit(std::span(p.x.data(), p.soil_count), std::span(p.y.data(), p.soil_count), 0.04, 0.002);

@@ -180,29 +180,34 @@ struct CoarseFailingModel {
 };
 }  // namespace
 
-TEST_CASE("a failed stress update is redone in parts, then by the fallback, then stress-free if it had no stress",
-          "[sph][stress]") {
+TEST_CASE(
+    "a failed stress update is redone in parts, then by the fallback, then stress-free if it had no stress",
+    "[sph][stress]") {
   Mat3 strain = Mat3::Zero();
   strain(0, 0) = 1.0;
   StepFailure log;
   const CoarseFailingModel fails{0.0}, succeeds{2.0};
   // Fails whole, succeeds in 4 parts (each 0.25): the parts add up to the whole increment.
-  const State s = update_splitting_on_failure(CoarseFailingModel{0.3}, fails, State{}, strain, Mat3::Zero(), log);
+  const State s =
+      update_splitting_on_failure(CoarseFailingModel{0.3}, fails, State{}, strain, Mat3::Zero(), log);
   CHECK(s.stress(0, 0) == Approx(1.0).epsilon(1e-15));
   CHECK(log.fallback_updates() == 1);
   CHECK_FALSE(log.failed());
   // 16 parts of 1/16 still too large: the fallback does it whole.
-  const State f = update_splitting_on_failure(CoarseFailingModel{0.05}, succeeds, State{}, strain, Mat3::Zero(), log);
+  const State f =
+      update_splitting_on_failure(CoarseFailingModel{0.05}, succeeds, State{}, strain, Mat3::Zero(), log);
   CHECK(f.stress(0, 0) == 1.0);
   CHECK(log.fallback_updates() == 2);
   // The fallback fails too: a particle with stress is an error, a stress-free one stays stress-free.
   State loaded;
   loaded.stress(1, 1) = -100.0;
-  CHECK_THROWS_AS(update_splitting_on_failure(CoarseFailingModel{0.05}, fails, loaded, strain, Mat3::Zero(), log),
-                  IntegrationError);
+  CHECK_THROWS_AS(
+      update_splitting_on_failure(CoarseFailingModel{0.05}, fails, loaded, strain, Mat3::Zero(), log),
+      IntegrationError);
   State vanished;
   vanished.stress(0, 0) = -2e-11, vanished.pc = 5e-11;
-  const State free = update_splitting_on_failure(CoarseFailingModel{0.05}, fails, vanished, strain, Mat3::Zero(), log);
+  const State free =
+      update_splitting_on_failure(CoarseFailingModel{0.05}, fails, vanished, strain, Mat3::Zero(), log);
   CHECK(free.stress.norm() == 0.0);
   CHECK(free.pc == 5e-11);
   CHECK(log.fallback_updates() == 4);

@@ -12,8 +12,16 @@ namespace {
 struct FreeFall {
   Particles p = test::lattice(1, 1e-3, 2000.0);
   LinearElastic model{{2000.0, 1.0e6, 0.3}};
-  SolverSetup setup{CubicSpline(1.3e-3), 0.5, 25.0, 1.0, 1.0, MomentumParams{}, WallGuard{-1e9, 1e9, std::nullopt},
-                    false, false, RestCriterion{}};
+  SolverSetup setup{CubicSpline(1.3e-3),
+                    0.5,
+                    25.0,
+                    1.0,
+                    1.0,
+                    MomentumParams{},
+                    WallGuard{-1e9, 1e9, std::nullopt},
+                    false,
+                    false,
+                    RestCriterion{}};
   FreeFall() {
     setup.momentum.gravity = 9.81;
     setup.momentum.smoothing_length = 1.3e-3;
@@ -55,19 +63,22 @@ TEST_CASE("the step clock lands on the end time and calls frames within half a s
   }
   REQUIRE(frames.size() == 4);
   for (int k = 0; k < 3; ++k) CHECK(std::abs(frames[k] - 0.03 * (k + 1)) <= 0.5 * cfl * (1 + 1e-9));
-  CHECK(frames[3] == 0.1);  // the end time exactly
+  CHECK(frames[3] == 0.1);                    // the end time exactly
   CHECK(smallest >= 0.5 * cfl * (1 - 1e-9));  // never below half a CFL step
 }
 
 TEST_CASE("the output settings do not change the solution", "[leapfrog]") {
   // Frames every step or once: the same steps, the same final state, bit for bit.
   const auto final_x = [](double frame_interval) {
-    const Scene scene = test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.004", "scene.end_time=0.02",
-                                                            "output.frame_interval=" + std::to_string(frame_interval)});
+    const Scene scene =
+        test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.004", "scene.end_time=0.02",
+                                            "output.frame_interval=" + std::to_string(frame_interval)});
     Particles p = build_particles(scene);
     set_geostatic_state(p, scene);
     const SolverSetup setup = make_solver_setup(scene);
-    run(std::get<DruckerPrager>(scene.material), setup, p, [](const Particles&, double) {}, [](double, std::size_t) {});
+    run(
+        std::get<DruckerPrager>(scene.material), setup, p, [](const Particles&, double) {},
+        [](double, std::size_t) {});
     return std::vector<double>(p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(p.soil_count));
   };
   CHECK(final_x(0.02) == final_x(0.0001));
@@ -100,7 +111,8 @@ TEST_CASE("rest: a few movers are allowed, a sustained quiet is required", "[res
 
 TEST_CASE("stop at rest: a column held by both walls stops after the rest duration", "[rest][column]") {
   const Scene scene = test::shipped_scene(
-      "collapse-dp", {"scene.particle_spacing=0.004", "scene.wall_withdrawal=\"none\"", "scene.rest_duration=0.02"});
+      "collapse-dp",
+      {"scene.particle_spacing=0.004", "scene.wall_withdrawal=\"none\"", "scene.rest_duration=0.02"});
   Particles p = build_particles(scene);
   set_geostatic_state(p, scene);
   const SolverSetup setup = make_solver_setup(scene);

@@ -196,10 +196,10 @@ TEST_CASE("runout_thick_m: the toe where the deposit reaches the given thickness
   // particle thick for another 30 mm. Thickness of a strip = top y + spacing.
   Particles deposit;
   deposit.add_profile(21, [](double px) { return 0.020 - (kWall - px); });  // slope: 20 mm at the wall
-  for (int k = 21; k <= 50; ++k) deposit.add(kWall - k * kSpacing, 0.0);  // the thin tail
+  for (int k = 21; k <= 50; ++k) deposit.add(kWall - k * kSpacing, 0.0);    // the thin tail
   const auto tail = measure_deposit(deposit.x, deposit.y, kWall, kSpacing, 0.0);
   CHECK(tail.runout_m == Approx(0.050).epsilon(1e-12));  // the tail counts for runout_m
-  CHECK(std::isnan(tail.runout_thick_m));                 // not asked for
+  CHECK(std::isnan(tail.runout_thick_m));                // not asked for
   // 6 mm thick: top y ≥ 5 mm, on the slope 15 mm from the wall.
   const auto thick = measure_deposit(deposit.x, deposit.y, kWall, kSpacing, 0.006);
   CHECK(thick.runout_thick_m == Approx(0.015).epsilon(1e-9));
