@@ -13,10 +13,12 @@
 /// How: the run proceeds in chunks of steps, each one parallel region with the chosen count; the
 /// tuner times every chunk per particle-step and now and then tries the other count for one chunk
 /// (the candidates are the largest count and one thread), a quarter of the usual length, since on
-/// a busy machine two threads with spinning waits can be 3–5× slower. It keeps whichever was faster at its
-/// latest try. A try that confirms the current choice doubles the interval to the next (up to
-/// `max_interval` chunks), so on a steady machine the trials cost about 1 % of the run; a switch
-/// resets it, so a change of load is followed within a few chunks.
+/// a busy machine two threads with spinning waits can be 3–5× slower. It keeps whichever was
+/// faster at its latest try. A try that confirms the current choice doubles the interval to the
+/// next (up to `max_interval` chunks), so on a steady machine the trials cost about 1 % of the run;
+/// a switch resets it, so a change of load is followed within a few chunks. Timing noise can make a
+/// trial look faster than it is: measured, auto lost 11 % against two fixed threads on one idle
+/// run of 6525 particles, and matched them on the others (docs/sph.md, Performance).
 #include <algorithm>
 #include <cstddef>
 
