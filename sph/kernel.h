@@ -18,15 +18,7 @@ class CubicSpline {
   /// Support radius 2h: W and its gradient vanish beyond it.
   double support() const { return 2.0 * h_; }
 
-  /// W(r, h), eq 2.
-  double value(double r) const {
-    const double R = r * inv_h_;
-    if (R < 1.0) return a_d_ * (2.0 / 3.0 - R * R + 0.5 * R * R * R);
-    if (R < 2.0) return a_d_ * (2.0 - R) * (2.0 - R) * (2.0 - R) / 6.0;
-    return 0.0;
-  }
-
-  /// W(r, h) and dW/dr together (one branch, for the neighbour list).
+  /// W(r, h) and dW/dr together, from one branch on R (the neighbour list needs both).
   struct ValueAndDerivative {
     double value, derivative;
   };
@@ -41,13 +33,11 @@ class CubicSpline {
     return {0.0, 0.0};
   }
 
+  /// W(r, h), eq 2.
+  double value(double r) const { return value_and_derivative(r).value; }
+
   /// dW/dr; the gradient with respect to x_i is dW/dr · (x_i − x_j)/r.
-  double derivative(double r) const {
-    const double R = r * inv_h_;
-    if (R < 1.0) return a_d_ * inv_h_ * (-2.0 * R + 1.5 * R * R);
-    if (R < 2.0) return -0.5 * a_d_ * inv_h_ * (2.0 - R) * (2.0 - R);
-    return 0.0;
-  }
+  double derivative(double r) const { return value_and_derivative(r).derivative; }
 
  private:
   double h_;

@@ -56,13 +56,3 @@ TEST_CASE("on a lattice the kernel sums to one and its gradient to zero", "[kern
     CHECK(std::abs(gy) < 1e-9 / dx);
   }
 }
-
-TEST_CASE("value_and_derivative gives value() and derivative() on both branches and beyond", "[kernel]") {
-  const CubicSpline W(1.3e-3);
-  for (const double R : {0.0, 0.3, 0.99, 1.0, 1.5, 1.999, 2.0, 2.5}) {
-    const double r = R * 1.3e-3;
-    const auto [value, derivative] = W.value_and_derivative(r);
-    CHECK(value == Approx(W.value(r)).epsilon(1e-14));
-    CHECK(derivative == Approx(W.derivative(r)).epsilon(1e-14));
-  }
-}
