@@ -18,17 +18,16 @@ class Collapse {
 
   /// Runs the scene (solver.h, run) and returns its statistics.
   template <class OnFrame, class OnStep>
-  const RunStatistics& run(ThreadTuner tuner, OnFrame&& on_frame, OnStep&& on_step) {
-    stats_ = std::visit(
+  RunStatistics run(ThreadTuner tuner, OnFrame&& on_frame, OnStep&& on_step) {
+    return std::visit(
         [&](const auto& model) {
           return sph::run(model, setup_, particles_, std::forward<OnFrame>(on_frame),
                           std::forward<OnStep>(on_step), tuner);
         },
         scene_.material);
-    return stats_;
   }
   /// Runs without frames or progress.
-  const RunStatistics& run(ThreadTuner tuner) {
+  RunStatistics run(ThreadTuner tuner) {
     return run(
         tuner, [](const Particles&, double) {}, [](double, std::size_t) {});
   }
@@ -41,10 +40,8 @@ class Collapse {
                            scene_.geometry.particle_spacing, 0.1 * scene_.geometry.column_height);
   }
 
-  const Scene& scene() const { return scene_; }
   const Particles& particles() const { return particles_; }
   const SolverSetup& setup() const { return setup_; }
-  const RunStatistics& stats() const { return stats_; }
 
  private:
   static Particles geostatic_particles(const Scene& scene) {
@@ -56,7 +53,6 @@ class Collapse {
   const Scene& scene_;
   Particles particles_;
   SolverSetup setup_;
-  RunStatistics stats_;
 };
 
 }  // namespace soilsph::sph

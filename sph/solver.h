@@ -181,7 +181,6 @@ struct RunStatistics {
   std::size_t guard_corrections = 0;
   bool stopped_at_rest = false;
   double smallest_time_step = 0.0, largest_time_step = 0.0;  ///< s
-  std::size_t neighbour_searches = 0;
   std::size_t workspace_bytes = 0;          ///< neighbour list and step buffers
   std::size_t fallback_stress_updates = 0;  ///< updates whose first attempt failed (stages/stress_update.h)
 };
@@ -292,7 +291,6 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   stats.end_time = clock.time();
   stats.wall_seconds = elapsed.count();
   stats.guard_corrections = work.guard_corrections;
-  stats.neighbour_searches = work.neighbours.searches();
   stats.fallback_stress_updates = work.failure.fallback_updates();
   stats.workspace_bytes =
       work.neighbours.bytes_per_particle() * p.size() + 3 * p.size() * sizeof(double);  // the *_next buffers

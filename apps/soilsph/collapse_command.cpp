@@ -73,7 +73,7 @@ void run_collapse(const CollapseOptions& o) {
     writer.write(buffers.view(p, t, scene.output.fields));
   };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
-  const RunStatistics& stats = collapse.run(tuner, on_frame, on_step);
+  const RunStatistics stats = collapse.run(tuner, on_frame, on_step);
   progress.finish();
   const DepositMetrics deposit = collapse.deposit();
   Summary s;

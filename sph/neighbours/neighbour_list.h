@@ -72,15 +72,15 @@ class NeighbourList {
   /// Bytes held per particle by the list (pairs and candidates).
   std::size_t bytes_per_particle() const;
 
+  static constexpr double kSkinRatio = 0.25;  ///< s/h
+
+ private:
   // Per pair k (i, j = neighbour[k]):
   std::vector<int> neighbour;  ///< j
   std::vector<double> rx, ry;  ///< x_i − x_j (m)
   std::vector<double> w;       ///< W_ij
   std::vector<double> gx, gy;  ///< ∇_i W_ij = dW/dr (x_i − x_j)/r (1/m³)
 
-  static constexpr double kSkinRatio = 0.25;  ///< s/h
-
- private:
   /// Candidates of particle i within `radius`; returns how many there are (all of them, even beyond
   /// the slots, which then must grow).
   std::size_t search_row(std::size_t i, std::span<const double> x, std::span<const double> y, double radius2,

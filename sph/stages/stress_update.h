@@ -34,9 +34,6 @@ class StepFailure {
   const std::string& message() const {
     return *message_;
   }
-  void clear() {
-    message_.reset();
-  }
   void note_fallback() {
     fallback_updates_.fetch_add(1, std::memory_order_relaxed);
   }
