@@ -3,9 +3,14 @@
 /// Each subcommand of `soilsph` lives in its own file and registers itself on the root app here.
 /// A subcommand is thin: it parses options and calls the libraries.
 #include <CLI/CLI.hpp>
+#include <string>
 #include <string_view>
 
 namespace soilsph::cli {
+
+/// The command line this process was started with, words shell-quoted where needed (results record
+/// it beside the version: summary.json, point CSV headers).
+const std::string& invocation();
 
 void add_material_command(CLI::App& app);
 void add_stress_test_command(CLI::App& app);

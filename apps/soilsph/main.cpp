@@ -1,24 +1,59 @@
 // soilsph: constitutive-model verification and SPH soil-collapse simulation.
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
 #include "constitutive/parameters.h"
+#include "soilsph/version.h"
+
+namespace soilsph::cli {
+namespace {
+std::string g_invocation;
+
+/// A word as a POSIX shell reads it back: bare if it holds only safe characters, else single-quoted.
+std::string shell_quoted(const std::string& word) {
+  const bool safe = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                           "0123456789_-+=.,/:@%") == std::string::npos;
+  if (safe) return word;
+  std::string out = "'";
+  for (const char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+}  // namespace
+
+const std::string& invocation() { return g_invocation; }
+}  // namespace soilsph::cli
 
 int main(int argc, char** argv) {
+  for (int i = 0; i < argc; ++i)
+    soilsph::cli::g_invocation += (i ? " " : "") + soilsph::cli::shell_quoted(i ? argv[i] : "soilsph");
   CLI::App app{"soilsph: elastic-plastic soil models (Drucker-Prager, Modified Cam-Clay), their "
                "material-point verification, and SPH soil-collapse simulation"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "soilsph 0.1.0");
+  app.set_version_flag("--version", std::string("soilsph ") + soilsph::kVersion);
   soilsph::cli::add_material_command(app);
   soilsph::cli::add_stress_test_command(app);
   soilsph::cli::add_bench_command(app);
   soilsph::cli::add_point_command(app);
   soilsph::cli::add_verify_command(app);
   soilsph::cli::add_collapse_command(app);
+  // A closed pipe is a write error reported below, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
   try {
     app.parse(argc, argv);
+    // Results written to standard output (point CSVs, reports) are lost if it is full or closed:
+    // that is a failure, never an exit 0.
+    errno = 0;
+    std::cout.flush();
+    if (!std::cout) {
+      std::cerr << "error: cannot write to standard output"
+                << (errno ? std::string(": ") + std::strerror(errno) : std::string()) << '\n';
+      return 1;
+    }
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return app.exit(e) == 0 ? 0 : 2;  // --help and --version: 0; a bad command line is an input error: 2
   } catch (const soilsph::ParameterError& e) {
     std::cerr << "error: " << e.what() << '\n';
     return 2;
