@@ -67,6 +67,7 @@ double TableReader::number(std::string_view key, Range range, std::string_view u
     fail_value(key, format_number(*value),
                "is out of range (allowed: " + range.describe() + (unit.empty() ? "" : " ") + std::string(unit) + ")");
   }
+  record(key, *value);
   return *value;
 }
 
@@ -74,27 +75,32 @@ double TableReader::number_or(std::string_view key, double fallback, Range range
                               std::string_view unit) const {
   if (has(key)) return number(key, range, unit);
   used_.emplace(key);
+  record(key, fallback);
   return fallback;
 }
 
 long long TableReader::integer_or(std::string_view key, long long fallback, long long lo,
                                   long long hi) const {
   const toml::node* node = find(key);
-  if (!node) return fallback;
+  if (!node) {
+    record(key, fallback);
+    return fallback;
+  }
   const std::optional<long long> value = node->value_exact<long long>();
   if (!value) fail(key, "must be an integer");
   if (*value < lo || *value > hi) {
     fail_value(key, std::to_string(*value),
                "is out of range (allowed: " + std::to_string(lo) + " <= value <= " + std::to_string(hi) + ")");
   }
+  record(key, *value);
   return *value;
 }
 
 bool TableReader::boolean_or(std::string_view key, bool fallback) const {
   const toml::node* node = find(key);
-  if (!node) return fallback;
-  const std::optional<bool> value = node->value_exact<bool>();
+  const std::optional<bool> value = node ? node->value_exact<bool>() : fallback;
   if (!value) fail(key, "must be true or false");
+  record(key, *value);
   return *value;
 }
 
@@ -105,7 +111,10 @@ std::string TableReader::choice(std::string_view key, std::span<const std::strin
   const std::optional<std::string> value = node->value_exact<std::string>();
   if (!value) fail(key, "must be a string (allowed: " + options + ")");
   for (std::string_view a : allowed) {
-    if (*value == a) return *value;
+    if (*value == a) {
+      record(key, *value);
+      return *value;
+    }
   }
   fail_value(key, "\"" + *value + "\"", "is not allowed (allowed: " + options + ")");
 }
@@ -114,6 +123,7 @@ std::string TableReader::choice_or(std::string_view key, std::string_view fallba
                                    std::span<const std::string_view> allowed) const {
   if (has(key)) return choice(key, allowed);
   used_.emplace(key);
+  record(key, std::string(fallback));
   return std::string(fallback);
 }
 
@@ -122,7 +132,13 @@ std::vector<std::string> TableReader::choices_or(std::string_view key,
                                                  std::span<const std::string_view> allowed) const {
   const std::string options = quoted_list(allowed);
   const toml::node* node = find(key);
-  if (!node) return {fallback.begin(), fallback.end()};
+  const auto recorded = [&](std::vector<std::string> names) {
+    toml::array array;
+    for (const std::string& name : names) array.push_back(name);
+    record(key, std::move(array));
+    return names;
+  };
+  if (!node) return recorded({fallback.begin(), fallback.end()});
   const toml::array* array = node->as_array();
   if (!array)
     fail(key, "must be an array of names, e.g. [\"" + std::string(allowed.front()) +
@@ -139,7 +155,7 @@ std::vector<std::string> TableReader::choices_or(std::string_view key,
     }
     names.push_back(*value);
   }
-  return names;
+  return recorded(std::move(names));
 }
 
 void TableReader::accept(std::initializer_list<std::string_view> keys) const {

@@ -83,16 +83,25 @@ class TableReader {
 
   const std::string& source() const { return source_; }
   const std::string& table_name() const { return table_name_; }
+  /// Every key read so far with the value it was read as, defaults included: the table as the
+  /// program understood it, which reads back to the same values (results record it).
+  const toml::table& resolved() const { return resolved_; }
 
  private:
   const toml::node* find(std::string_view key) const;
   [[noreturn]] void fail_value(std::string_view key, std::string_view value, std::string_view what) const;
   std::string where(std::string_view key) const;
 
+  template <class Value>
+  void record(std::string_view key, Value&& value) const {
+    resolved_.insert_or_assign(key, std::forward<Value>(value));
+  }
+
   const toml::table& table_;
   std::string source_;
   std::string table_name_;
   mutable std::set<std::string, std::less<>> used_;
+  mutable toml::table resolved_;
 };
 
 /// Parses a TOML file, turning syntax errors into ParameterError with file, line and column.

@@ -15,14 +15,17 @@ class Collapse {
  public:
   explicit Collapse(const Scene& scene)
       : scene_(scene), particles_(geostatic_particles(scene)), setup_(make_solver_setup(scene)) {}
+  /// A collapse that continues from `particles` (a checkpoint's) rather than the initial column.
+  Collapse(const Scene& scene, Particles particles)
+      : scene_(scene), particles_(std::move(particles)), setup_(make_solver_setup(scene)) {}
 
   /// Runs the scene (solver.h, run) and returns its statistics.
   template <class OnFrame, class OnStep>
-  RunStatistics run(ThreadTuner tuner, OnFrame&& on_frame, OnStep&& on_step) {
+  RunStatistics run(ThreadTuner tuner, OnFrame&& on_frame, OnStep&& on_step, const RunControl& control = {}) {
     return std::visit(
         [&](const auto& model) {
           return sph::run(model, setup_, particles_, std::forward<OnFrame>(on_frame),
-                          std::forward<OnStep>(on_step), tuner);
+                          std::forward<OnStep>(on_step), tuner, control);
         },
         scene_.material);
   }

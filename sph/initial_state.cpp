@@ -112,6 +112,23 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
       scene.material);
 }
 
+double smallest_admissible_lateral_stress_ratio(const Material& material, const Geometry& geometry) {
+  return std::visit(
+      [&](const auto& model) {
+        const auto admissible = [&](double k0) {
+          State s;
+          s.stress = geostatic_stress(geometry, model.params().density, k0, 0.0);
+          s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0});
+          return inside_yield_surface(model, s);
+        };
+        double lo = 0.0, hi = 1.0;  // inadmissible at lo (or lo = 0), admissible at hi
+        if (admissible(1e-12)) return 0.0;
+        for (int k = 0; k < 60 && hi - lo > 1e-12; ++k) (admissible(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+        return hi;
+      },
+      material);
+}
+
 double largest_initial_pressure(const Scene& scene) {
   const Mat3 base =
       geostatic_stress(scene.geometry, density(scene.material), scene.initial.lateral_stress_ratio, 0.0);

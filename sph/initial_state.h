@@ -26,6 +26,14 @@ Particles build_particles(const Scene& scene);
 /// stress lies outside the yield surface (e.g. a K0 too far from 1 for D-P).
 void set_geostatic_state(Particles& particles, const Scene& scene);
 
+/// The smallest lateral stress ratio K0 (σxx/σyy = σzz/σyy) for which the geostatic stress of the
+/// column lies inside the material's yield surface, found by bisection on the model's own yield
+/// function at the column's base (the strictest depth: the D-P cone's distance grows with depth
+/// at K0 below its bound, and cohesion only helps near the surface); 0 if every K0 > 0 is
+/// admissible (elasticity, MCC, whose p_c is set from the stress). Above it every K0 up to 1 is
+/// admissible: an isotropic stress lies inside a cone or an ellipse through the origin.
+double smallest_admissible_lateral_stress_ratio(const Material& material, const Geometry& geometry);
+
 /// The largest initial mean pressure p of the soil (Pa), for the elastic wave speed.
 double largest_initial_pressure(const Scene& scene);
 

@@ -42,28 +42,44 @@ struct Particles {
   std::size_t boundary_count() const { return size() - soil_count; }
   bool is_soil(std::size_t i) const { return i < soil_count; }
 
+  /// Calls f(name, array) for every array of doubles: first those of every particle, then those of
+  /// the soil only (the one list that sizing, memory counts and checkpoints use).
+  template <class F>
+  void for_each_array(F&& f) {
+    for_each_array_of(*this, f);
+  }
+  template <class F>
+  void for_each_array(F&& f) const {
+    for_each_array_of(*this, f);
+  }
+  static constexpr std::size_t kParticleArrays = 15;  ///< the first arrays for_each_array visits
+
   /// Bytes held by the arrays.
   std::size_t bytes() const {
     std::size_t b =
         state.capacity() * sizeof(State) + layer.capacity() * sizeof(int) + boundary_kind.capacity();
-    for (const auto* a :
-         {&x,   &y,        &vx,       &vy,       &density, &mass, &sxx,          &syy, &sxy, &rxx, &ryy,
-          &rxy, &sxx_rho2, &syy_rho2, &sxy_rho2, &ax,      &ay,   &density_rate, &lxx, &lxy, &lyx, &lyy})
-      b += a->capacity() * sizeof(double);
+    for_each_array([&](const char*, const std::vector<double>& a) { b += a.capacity() * sizeof(double); });
     return b;
   }
 
   /// Sizes every array for `soil` soil and `boundary` boundary particles (zero-filled).
   void resize(std::size_t soil, std::size_t boundary) {
     soil_count = soil;
-    const std::size_t n = soil + boundary;
-    for (auto* a : {&x, &y, &vx, &vy, &density, &mass, &sxx, &syy, &sxy, &rxx, &ryy, &rxy, &sxx_rho2,
-                    &syy_rho2, &sxy_rho2})
-      a->assign(n, 0.0);
-    for (auto* a : {&ax, &ay, &density_rate, &lxx, &lxy, &lyx, &lyy}) a->assign(soil, 0.0);
+    std::size_t k = 0;
+    for_each_array([&](const char*, std::vector<double>& a) { a.assign(k++ < kParticleArrays ? soil + boundary : soil, 0.0); });
     state.assign(soil, State{});
     layer.assign(soil, 0);
     boundary_kind.assign(boundary, BoundaryKind::NoSlipFloor);
+  }
+
+ private:
+  template <class Self, class F>
+  static void for_each_array_of(Self& p, F& f) {
+    f("x", p.x), f("y", p.y), f("vx", p.vx), f("vy", p.vy), f("density", p.density), f("mass", p.mass);
+    f("sxx", p.sxx), f("syy", p.syy), f("sxy", p.sxy), f("rxx", p.rxx), f("ryy", p.ryy), f("rxy", p.rxy);
+    f("sxx_rho2", p.sxx_rho2), f("syy_rho2", p.syy_rho2), f("sxy_rho2", p.sxy_rho2);
+    f("ax", p.ax), f("ay", p.ay), f("density_rate", p.density_rate);
+    f("lxx", p.lxx), f("lxy", p.lxy), f("lyx", p.lyx), f("lyy", p.lyy);
   }
 };
 

@@ -38,7 +38,15 @@ struct RestCriterion {
 /// Tracks how long the criterion has held.
 class RestWatch {
  public:
+  /// What the watch remembers between steps (a checkpoint saves it).
+  struct Memory {
+    bool moved = false;   ///< the soil has moved: rest can be told from a start that is still slow
+    double since = -1.0;  ///< time the criterion started to hold (< 0: it does not hold)
+  };
   explicit RestWatch(const RestCriterion& criterion) : criterion_(criterion) {}
+  RestWatch(const RestCriterion& criterion, Memory memory)
+      : criterion_(criterion), moved_(memory.moved), since_(memory.since) {}
+  Memory memory() const { return {moved_, since_}; }
 
   /// After the step that reached time t, with `moving` of `particles` faster than the rest speed;
   /// true once the soil has been at rest for the whole duration.

@@ -53,6 +53,12 @@ struct OutputSettings {
   double frame_interval;   ///< s between HDF5 frames
   double layer_thickness;  ///< m, thickness of the coloured horizontal layers
   FieldSet fields;         ///< fields written in every frame besides the positions (default: all)
+  double checkpoint_interval;  ///< s of simulated time between checkpoints (DIR/checkpoint.h5)
+};
+
+/// [scene] bounds on what a run may cost (sph/feasibility.h), for a user to lift deliberately.
+struct RunLimits {
+  double max_run_hours;  ///< estimated wall time to the end time
 };
 
 struct Scene {
@@ -63,11 +69,22 @@ struct Scene {
   OutputSettings output;
   Material material;
   RestCriterion rest;  ///< [scene] stop_at_rest, rest_speed, rest_duration, rest_fraction
+  RunLimits limits;    ///< [scene] max_run_hours
+  /// The scene as read: every key with the value used, defaults included. Read back (read_scene),
+  /// it gives the same scene; a run saves it as DIR/scene.toml and records it in summary.json.
+  toml::table resolved;
 };
 
 /// Reads and validates a scene from a parsed TOML document; `source` names it in errors.
 Scene read_scene(const toml::table& root, const std::string& source);
 /// Parses `path`, applies the `section.key=value` overrides in order, then reads the scene.
 Scene load_scene(const std::string& path, std::span<const std::string> overrides = {});
+/// The same from TOML text (a checkpoint's scene); `source` names it in errors.
+Scene parse_scene(const std::string& text, const std::string& source, std::span<const std::string> overrides = {});
+
+/// The scene as run (Scene::resolved) as TOML text, which reads back to the same scene.
+std::string scene_toml(const Scene& scene);
+/// The same as a JSON object (summary.json's "inputs").
+std::string scene_json(const Scene& scene);
 
 }  // namespace soilsph::sph

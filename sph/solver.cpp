@@ -4,6 +4,17 @@
 
 namespace soilsph::sph {
 
+namespace {
+/// The box the soil stays in (blow_up.h): the floor from its far end to the fixed wall and its
+/// ghost layers, and twice the column's height, each widened by the kernel support 2h.
+Domain domain(const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  const double behind = g.boundary_layers * g.particle_spacing, support = 2.0 * g.smoothing_length();
+  return {g.column_width - g.floor_length - behind - support, g.column_width + behind + support,
+          -behind - support, 2.0 * g.column_height + support};
+}
+}  // namespace
+
 SolverSetup make_solver_setup(const Scene& scene) {
   const Geometry& g = scene.geometry;
   const CubicSpline kernel(g.smoothing_length());
@@ -30,7 +41,9 @@ SolverSetup make_solver_setup(const Scene& scene) {
           wall_guard(scene),
           scene.numerics.velocity_gradient_correction,
           elasticity.kind() == Elasticity::Kind::PressureDependent,
-          scene.rest};
+          scene.rest,
+          domain(scene),
+          scene.output.checkpoint_interval};
 }
 
 }  // namespace soilsph::sph

@@ -19,9 +19,13 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <functional>
+#include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "sph/blow_up.h"
 #include "sph/kernel.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
@@ -51,6 +55,8 @@ struct SolverSetup {
   bool velocity_gradient_correction = false;  ///< stages/velocity_gradient.h
   bool pressure_dependent_stiffness = false;  ///< recompute c from the pressures at each search
   RestCriterion rest;
+  Domain domain;                    ///< no soil particle may leave it (blow_up.h)
+  double checkpoint_interval = 0.0;  ///< s of simulated time between checkpoints (0: none at intervals)
 
   /// Δt of the soil at rest with the initial sound speed: the largest step the run takes while c
   /// does not fall.
@@ -72,6 +78,8 @@ struct Workspace {
   std::size_t guard_corrections = 0;  ///< times the wall guard had to act (expected 0)
   StepFailure failure;                ///< a failed constitutive update, and the count of fallbacks
   std::exception_ptr error;           ///< a failed neighbour search
+  double energy_budget = std::numeric_limits<double>::infinity();  ///< J/m the kinetic energy may not exceed
+  std::string blow_up;  ///< what the close of the last step found insane (blow_up.h); empty: nothing
 
   Workspace(const SolverSetup& setup, const Particles& p)
       : vx_next(p.vx), vy_next(p.vy), density_next(p.density), sound_speed(setup.sound_speed) {}
@@ -80,24 +88,42 @@ struct Workspace {
 
 namespace detail {
 /// The serial end of a step: swap in v^{n+½} and ρ^{n+1}, the wall guard, the step's largest speed
-/// and number of moving particles, and whether the next step must search neighbours.
+/// and number of moving particles, whether the next step must search neighbours, and the blow-up
+/// checks (blow_up.h) in the same pass over the soil.
 template <class Model>
 void close_step(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
   std::swap(p.vx, work.vx_next);
   std::swap(p.vy, work.vy_next);
   std::swap(p.density, work.density_next);
-  work.guard_corrections += setup.guard.apply(p);
+  const std::size_t pushed = setup.guard.apply(p);
+  work.guard_corrections += pushed;
   work.previous_dt = dt;
-  const double rest2 = setup.rest.speed * setup.rest.speed;
-  double v2_max = 0.0;
-  std::size_t moving = 0;
+  const double rest2 = setup.rest.speed * setup.rest.speed, c2 = work.sound_speed * work.sound_speed;
+  double v2_max = 0.0, kinetic = 0.0;
+  std::size_t moving = 0, first_insane = p.soil_count;
   for (std::size_t i = 0; i < p.soil_count; ++i) {
     const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
     v2_max = std::max(v2_max, v2);
     moving += v2 > rest2;
+    kinetic += 0.5 * p.mass[i] * v2;
+    // NaN fails every comparison: the sound case is written so that it passes only finite values.
+    const bool sane = v2 <= c2 && p.density[i] > 0.0 && setup.domain.contains(p.x[i], p.y[i]) &&
+                      std::isfinite(p.density[i]);
+    if (!sane && first_insane == p.soil_count) first_insane = i;
   }
   work.max_speed = std::sqrt(v2_max);
   work.moving = moving;
+  if (first_insane < p.soil_count) {
+    work.blow_up = particle_blow_up(p, first_insane, work.sound_speed, setup.domain);
+  } else if (!(kinetic <= work.energy_budget)) {
+    work.blow_up = "blow-up: the kinetic energy " + std::to_string(kinetic) +
+                   " J/m exceeds all the energy the soil held at the start, " +
+                   std::to_string(work.energy_budget) + " J/m (potential, elastic, kinetic)" + kBlowUpHint;
+  } else if (pushed > std::max<std::size_t>(10, p.soil_count / 100)) {
+    work.blow_up = "blow-up: the wall guard pushed " + std::to_string(pushed) +
+                   " soil particles back through a wall in one step" + kBlowUpHint;
+  }
+  if (!work.blow_up.empty()) return;  // a search on such positions would fail or exhaust memory
   work.search_next = work.neighbours.search_needed(p.x, p.y);
   if constexpr (requires { model.elasticity(); }) {
     if (setup.pressure_dependent_stiffness && work.search_next)
@@ -174,11 +200,19 @@ void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspa
   advance(model, fallback_model(model), setup, p, work, dt, [] {});
 }
 
+/// Why a run returned.
+enum class StopReason {
+  EndTime,  ///< it reached the scene's end time
+  Rest,     ///< the soil came to rest (rest.h)
+  Request,  ///< the caller asked it to stop (RunControl::stop_requested, e.g. on a signal)
+};
+
 struct RunStatistics {
   std::size_t steps = 0;
   double end_time = 0.0;  ///< time reached (s)
   double wall_seconds = 0.0;
   std::size_t guard_corrections = 0;
+  StopReason stop = StopReason::EndTime;
   bool stopped_at_rest = false;
   double smallest_time_step = 0.0, largest_time_step = 0.0;  ///< s
   std::size_t workspace_bytes = 0;          ///< neighbour list and step buffers
@@ -192,8 +226,14 @@ struct RunStatistics {
 class StepClock {
  public:
   explicit StepClock(const SolverSetup& setup) : setup_(setup), next_frame_(setup.frame_interval) {}
+  /// A clock at time t whose next frame is due at next_frame (a resumed run).
+  StepClock(const SolverSetup& setup, double t, double next_frame)
+      : setup_(setup), t_(t), next_frame_(next_frame) {}
 
   double time() const { return t_; }
+  double next_frame() const { return next_frame_; }
+  /// The step of the last next_step() is shorter than the CFL step (it approaches the end time).
+  bool shortened() const { return dt_ < cfl_dt_; }
   /// The length of the next step for the current sound speed and largest speed.
   double next_step(double sound_speed, double max_speed) {
     cfl_dt_ = cfl_time_step(setup_.cfl, setup_.kernel.smoothing_length(), sound_speed, max_speed);
@@ -219,32 +259,100 @@ class StepClock {
   bool lands_ = false;
 };
 
-/// Runs to the end time, or until the soil is at rest if the scene asks for it. Calls
-/// on_frame(particles, t) at t = 0, every frame interval and at the end (the time reached), and
-/// on_step(t, steps) after every step. A failed update or search is rethrown after the region:
-/// IntegrationError naming the particle, or the search's std::runtime_error with the time added.
-/// `tuner` picks the threads of each chunk of steps (sph/thread_tuner.h); by default the OpenMP
-/// maximum throughout.
+/// What the time loop carries from one step to the next besides the particles: with them, all a
+/// run needs to continue bit for bit (a checkpoint saves both; output/checkpoint.h).
+struct LoopState {
+  RunStatistics stats;  ///< so far: steps, time reached, wall time, counts, Δt range
+  double next_frame = 0.0;   ///< s, time of the next frame
+  double previous_dt = 0.0;  ///< Δt_{n−1} (s)
+  double sound_speed = 0.0;  ///< current c (m/s)
+  double max_speed = 0.0;    ///< largest soil speed after the last step (m/s)
+  std::size_t moving = 0;    ///< soil particles faster than the rest speed after the last step
+  RestWatch::Memory rest;
+  std::vector<double> search_x, search_y;  ///< every particle's position at the last neighbour search
+};
+
+/// What a caller can do to a run besides watching its frames and steps.
+struct RunControl {
+  /// Polled after every step (serial): true stops the run there, as at its end (a signal).
+  std::function<bool()> stop_requested;
+  /// Called with the state to continue from: every checkpoint_interval of simulated time, when the
+  /// run stops at rest or on request, and before the steps that are shortened to land on the end
+  /// time (so that a run continued from it to a later end time steps exactly as one that never
+  /// stopped). Serial; the particles hold the state of the LoopState's time.
+  std::function<void(const Particles&, const LoopState&)> checkpoint;
+  /// Continue from this state (the particles must hold the state saved with it): no frame at its
+  /// time, which the run that saved it wrote if one was due.
+  const LoopState* resume = nullptr;
+};
+
+/// Runs to the end time, or until the soil is at rest if the scene asks for it, or until `control`
+/// asks it to stop. Calls on_frame(particles, t) at t = 0 (not when resuming), every frame interval
+/// and at the end (the time reached), and on_step(t, steps) after every step. A failed update or
+/// search is rethrown after the region: IntegrationError naming the particle, BlowUp (blow_up.h),
+/// or the search's std::runtime_error, each with the step and time added. `tuner` picks the threads
+/// of each chunk of steps (sph/thread_tuner.h); by default the OpenMP maximum throughout.
 template <class Model, class OnFrame, class OnStep>
 RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, OnFrame&& on_frame,
-                  OnStep&& on_step, ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false)) {
+                  OnStep&& on_step, ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false),
+                  const RunControl& control = {}) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   Workspace work(setup, p);
   const Model fallback = fallback_model(model);  // for a failed update (stages/stress_update.h)
-  StepClock clock(setup);
-  RestWatch rest(setup.rest);
-  RunStatistics stats;
+  const LoopState* resume = control.resume;
+  StepClock clock = resume ? StepClock(setup, resume->stats.end_time, resume->next_frame) : StepClock(setup);
+  RestWatch rest = resume ? RestWatch(setup.rest, resume->rest) : RestWatch(setup.rest);
+  RunStatistics stats = resume ? resume->stats : RunStatistics{};
+  if (resume) {
+    work.previous_dt = resume->previous_dt;
+    work.sound_speed = resume->sound_speed;
+    work.max_speed = resume->max_speed;
+    work.moving = resume->moving;
+    work.guard_corrections = stats.guard_corrections;
+    work.failure.restore_fallback_updates(stats.fallback_stress_updates);
+    // The same candidates as the run that saved the state: the search from the same positions.
+    work.neighbours.search(resume->search_x, resume->search_y, setup.kernel, p.soil_count);
+    work.search_next = work.neighbours.search_needed(p.x, p.y);
+  }
+  if constexpr (requires { model.elasticity(); })
+    work.energy_budget = energy_budget(p, model.elasticity(), setup.momentum.gravity, setup.guard.floor_y);
+  const double wall_before = stats.wall_seconds;
+  double next_checkpoint = setup.checkpoint_interval > 0.0
+                               ? setup.checkpoint_interval * (std::floor(clock.time() / setup.checkpoint_interval) + 1)
+                               : std::numeric_limits<double>::infinity();
+  bool checkpoint_before_end = false;  // written before the steps shortened onto the end time
+  const auto checkpoint = [&] {
+    if (!control.checkpoint) return;
+    LoopState state{stats, clock.next_frame(), work.previous_dt, work.sound_speed, work.max_speed, work.moving,
+                    rest.memory(), {}, {}};
+    state.stats.end_time = clock.time();
+    state.stats.wall_seconds = wall_before + std::chrono::duration<double>(Clock::now() - start).count();
+    state.stats.guard_corrections = work.guard_corrections;
+    state.stats.fallback_stress_updates = work.failure.fallback_updates();
+    state.search_x = work.neighbours.search_x();
+    state.search_y = work.neighbours.search_y();
+    control.checkpoint(p, state);
+  };
   std::exception_ptr error;
   bool stop = false;
-  on_frame(p, 0.0);
-  double dt = clock.next_step(work.sound_speed, 0.0);
-  stats.smallest_time_step = stats.largest_time_step = clock.cfl_step();
+  if (!resume) on_frame(p, 0.0);
+  double dt = clock.next_step(work.sound_speed, work.max_speed);
+  if (!resume) stats.smallest_time_step = stats.largest_time_step = clock.cfl_step();
+  stats.smallest_time_step = std::min(stats.smallest_time_step, clock.cfl_step());
+  stats.largest_time_step = std::max(stats.largest_time_step, clock.cfl_step());
+  const auto before_step = [&] {  // serial, once dt is known: the checkpoint before the end's short steps
+    if (clock.shortened() && !checkpoint_before_end) {
+      checkpoint_before_end = true;
+      checkpoint();
+    }
+  };
   const auto close = [&] {  // serial, after each step
     try {
-      if (work.failed()) {
+      if (work.failed() || !work.blow_up.empty()) {
         const std::string when =
             " (step " + std::to_string(stats.steps + 1) + ", t = " + std::to_string(clock.time()) + " s)";
+        if (!work.blow_up.empty()) throw BlowUp(work.blow_up + when);
         if (work.failure.failed()) throw IntegrationError(work.failure.message() + when);
         try {
           std::rethrow_exception(work.error);
@@ -256,18 +364,30 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
       ++stats.steps;
       on_step(clock.time(), stats.steps);
       stats.stopped_at_rest = rest.at_rest(clock.time(), work.moving, p.soil_count);
-      stop = stats.stopped_at_rest || clock.at_end();
+      const bool requested = control.stop_requested && control.stop_requested();
+      stats.stop = stats.stopped_at_rest ? StopReason::Rest
+                   : clock.at_end()      ? StopReason::EndTime
+                                         : StopReason::Request;
+      stop = stats.stopped_at_rest || clock.at_end() || requested;
       if (frame_due || stop) on_frame(p, clock.time());
-      if (!stop) {
-        dt = clock.next_step(work.sound_speed, work.max_speed);
-        stats.smallest_time_step = std::min(stats.smallest_time_step, clock.cfl_step());
-        stats.largest_time_step = std::max(stats.largest_time_step, clock.cfl_step());
+      if (stop) {
+        if (stats.stop != StopReason::EndTime || !checkpoint_before_end) checkpoint();
+        return;
       }
+      if (clock.time() >= next_checkpoint) {
+        checkpoint();
+        while (next_checkpoint <= clock.time()) next_checkpoint += setup.checkpoint_interval;
+      }
+      dt = clock.next_step(work.sound_speed, work.max_speed);
+      stats.smallest_time_step = std::min(stats.smallest_time_step, clock.cfl_step());
+      stats.largest_time_step = std::max(stats.largest_time_step, clock.cfl_step());
+      before_step();
     } catch (...) {
       error = std::current_exception();
       stop = true;
     }
   };
+  before_step();
   // Chunks of about kChunkSeconds of wall time, each one parallel region with the tuner's count.
   constexpr double kChunkSeconds = 0.05;
   std::size_t chunk = 16;
@@ -289,7 +409,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   if (error) std::rethrow_exception(error);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   stats.end_time = clock.time();
-  stats.wall_seconds = elapsed.count();
+  stats.wall_seconds = wall_before + elapsed.count();
   stats.guard_corrections = work.guard_corrections;
   stats.fallback_stress_updates = work.failure.fallback_updates();
   stats.workspace_bytes =

@@ -71,8 +71,9 @@ void run_bench(const BenchOptions& o) {
     variants.push_back({"to end time", 0, true});
     std::vector<Measurement> scene_rows;
     for (const Variant& v : variants) {
+      static const std::string kToEnd = "scene.stop_at_rest=false";
       std::vector<std::string> overrides = base;
-      if (v.to_end) overrides.push_back("scene.stop_at_rest=false");
+      if (v.to_end) overrides.push_back(kToEnd);
       const Scene scene = load_scene(file, overrides);
       Collapse collapse(scene);
       const ThreadTuner tuner = v.threads == 0 ? ThreadTuner(cores, true) : ThreadTuner(v.threads, false);

@@ -1,5 +1,8 @@
-// `soilsph collapse SCENE.toml [--out DIR] [--threads N|auto] [--set KEY=VALUE]...`: the SPH soil-column
-// collapse (sph/): reads the scene, runs the solver, writes frames, summary.json and a short report.
+// `soilsph collapse SCENE.toml [--out DIR] [--threads N|auto] [--set KEY=VALUE]...` and
+// `soilsph collapse --resume DIR [--set scene.end_time=T]...`: the SPH soil-column collapse (sph/):
+// reads the scene, runs the solver, writes frames, checkpoints, summary.json and a short report.
+// What each file of DIR holds after a normal end, a signal, kill -9, a blow-up and a full disk is in
+// docs/sph-output.md (Run records).
 #include <omp.h>
 
 #include <algorithm>
@@ -7,9 +10,15 @@
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
+#include "apps/soilsph/stop_signal.h"
+#include "constitutive/integrators/integrator.h"
+#include "soilsph/version.h"
 #include "sph/collapse.h"
 #include "sph/diagnostics.h"
+#include "sph/feasibility.h"
 #include "sph/frame_buffers.h"
+#include "sph/output/atomic_file.h"
+#include "sph/output/checkpoint.h"
 #include "sph/output/frame_writer.h"
 #include "sph/output/progress.h"
 #include "sph/output/summary.h"
@@ -17,16 +26,18 @@
 namespace soilsph::cli {
 
 namespace {
-/// `--threads auto`: every core (or OMP_NUM_THREADS if less), one thread while the machine is too busy for
-/// more to help (sph/thread_tuner.h); `--threads N`: N throughout, capped at the core count, since more
-/// threads than cores only wait for each other at every barrier of a step.
+namespace fs = std::filesystem;
+
+/// `--threads auto`: every core (or OMP_NUM_THREADS if less), one thread while the machine is too
+/// busy for more to help (sph/thread_tuner.h); `--threads N`: N throughout, capped at the core
+/// count, since more threads than cores only wait for each other at every barrier of a step.
 sph::ThreadTuner thread_tuner(const std::string& option) {
   const int cores = omp_get_num_procs();
   if (option == "auto") return sph::ThreadTuner(std::min(omp_get_max_threads(), cores), true);
   int requested = 0;
   const auto [end, ec] = std::from_chars(option.data(), option.data() + option.size(), requested);
   if (ec != std::errc() || end != option.data() + option.size() || requested < 1)
-    throw std::runtime_error("--threads " + option + ": expected \"auto\" or a whole number of threads >= 1");
+    throw ParameterError("--threads " + option + ": expected \"auto\" or a whole number of threads >= 1");
   if (requested > cores)
     std::cerr << "soilsph collapse: --threads " << requested << " capped at the " << cores
               << " cores of this machine\n";
@@ -36,9 +47,44 @@ sph::ThreadTuner thread_tuner(const std::string& option) {
 struct CollapseOptions {
   std::string scene;
   std::string out = "results/collapse";
+  std::string resume;            ///< a run folder to continue, or empty
   std::string threads = "auto";  ///< "auto" or a count
   std::vector<std::string> overrides;
 };
+
+/// The keys `--resume` may change: when and how the run ends and how often it saves itself. Any
+/// other change would not continue the same run.
+constexpr std::string_view kResumableKeys[] = {"scene.end_time",      "scene.stop_at_rest",
+                                               "scene.rest_speed",    "scene.rest_duration",
+                                               "scene.rest_fraction", "scene.max_run_hours",
+                                               "output.checkpoint_interval"};
+
+void check_resumable(const std::vector<std::string>& overrides) {
+  for (const std::string& assignment : overrides) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    if (std::find(std::begin(kResumableKeys), std::end(kResumableKeys), key) == std::end(kResumableKeys)) {
+      std::string allowed;
+      for (std::string_view k : kResumableKeys) allowed.append(allowed.empty() ? "" : ", ").append(k);
+      throw ParameterError("--set " + assignment + ": " + key +
+                           " cannot change when a run is resumed (it would not continue the same run; start a "
+                           "new one). Allowed with --resume: " + allowed);
+    }
+  }
+}
+
+/// Files a previous run left in DIR that would describe it beside this run's frames: its summary,
+/// its checkpoint and the pictures scripts/plot_collapse.py draws.
+void remove_stale_results(const fs::path& dir) {
+  std::error_code ignored;
+  for (const char* name : {"summary.json", "summary.json.tmp", "checkpoint.h5", "checkpoint.h5.tmp",
+                           "frames.xdmf.tmp", "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png"})
+    fs::remove(dir / name, ignored);
+  if (fs::is_directory(dir, ignored))
+    for (const auto& entry : fs::directory_iterator(dir, ignored)) {
+      const std::string name = entry.path().filename().string();
+      if (name.starts_with("velocity_t") && name.ends_with(".png")) fs::remove(entry.path(), ignored);
+    }
+}
 
 template <class Model>
 std::string integrator_of(const Model& model) {
@@ -49,79 +95,153 @@ std::string integrator_of(const Model& model) {
   }
 }
 
-void run_collapse(const CollapseOptions& o) {
-  using namespace soilsph::sph;
-  const Scene scene = load_scene(o.scene, o.overrides);
-  const ThreadTuner tuner = thread_tuner(o.threads);
-
-  Collapse collapse(scene);
-  const Particles& particles = collapse.particles();
-  const SolverSetup& setup = collapse.setup();
-  std::cout << o.scene << ": " << model_name(scene.material) << ", " << particles.soil_count << " soil + "
-            << particles.boundary_count() << " boundary particles, h = " << setup.kernel.smoothing_length()
-            << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step()
-            << " s at rest, to t = " << scene.geometry.end_time << " s"
-            << (scene.rest.enabled ? " or rest, " : ", ") << tuner.threads() << " thread(s)"
-            << (o.threads == "auto" ? " (auto: fewer while they are slower)" : "") << std::endl;
-
-  FrameWriter writer(o.out, scene.output.fields);
-  FrameBuffers buffers;
-  Progress progress(scene.geometry.end_time);
-  const auto on_frame = [&](const Particles& p, double t) {
-    if (!all_finite(p))
-      throw std::runtime_error("the solution is no longer finite at t = " + std::to_string(t) + " s");
-    writer.write(buffers.view(p, t, scene.output.fields));
-  };
-  const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
-  const RunStatistics stats = collapse.run(tuner, on_frame, on_step);
-  progress.finish();
-  const DepositMetrics deposit = collapse.deposit();
-  Summary s;
+/// The summary's record of the run: what it is, where it came from, and (after a stop) its figures.
+sph::Summary describe(const sph::Scene& scene, const sph::Collapse& collapse, int threads) {
+  sph::Summary s;
   s.model = std::string(model_name(scene.material));
   s.integrator = std::visit([](const auto& m) { return integrator_of(m); }, scene.material);
-  s.particles = particles.soil_count;
-  s.boundary_particles = particles.boundary_count();
+  s.particles = collapse.particles().soil_count;
+  s.boundary_particles = collapse.particles().boundary_count();
+  s.particle_spacing = scene.geometry.particle_spacing;
+  s.smoothing_ratio = scene.geometry.smoothing_ratio;
+  s.time_step = collapse.setup().initial_time_step();
+  s.threads = threads;
+  s.version = kVersion;
+  s.command_line = invocation();
+  s.inputs_json = sph::scene_json(scene);
+  return s;
+}
+
+/// Adds what a run that stopped reports: statistics, deposit, end state.
+void add_results(sph::Summary& s, const sph::RunStatistics& stats, const sph::Collapse& collapse) {
+  const sph::Particles& p = collapse.particles();
+  const sph::DepositMetrics deposit = collapse.deposit();
   s.steps = stats.steps;
   s.end_time = stats.end_time;
   s.wall_seconds = stats.wall_seconds;
   s.particle_steps_per_second =
-      static_cast<double>(particles.soil_count) * static_cast<double>(stats.steps) / stats.wall_seconds;
+      stats.wall_seconds > 0 ? static_cast<double>(p.soil_count) * static_cast<double>(stats.steps) / stats.wall_seconds
+                             : 0.0;
   s.runout_m = deposit.runout_m;
   s.height_m = deposit.height_m;
   s.repose_angle_deg = deposit.repose_angle_deg;
   s.runout_thick_m = deposit.runout_thick_m;
-  s.max_speed_end = max_speed(particles);
-  s.kinetic_energy_end = kinetic_energy(particles);
-  s.particle_spacing = scene.geometry.particle_spacing;
-  s.smoothing_ratio = scene.geometry.smoothing_ratio;
-  s.time_step = setup.initial_time_step();
+  s.max_speed_end = sph::max_speed(p);
+  s.kinetic_energy_end = sph::kinetic_energy(p);
   s.smallest_time_step = stats.smallest_time_step;
   s.largest_time_step = stats.largest_time_step;
   s.stopped_at_rest = stats.stopped_at_rest;
   s.guard_corrections = stats.guard_corrections;
   s.fallback_stress_updates = stats.fallback_stress_updates;
-  s.threads = tuner.threads();
-  write_summary_json(std::filesystem::path(o.out) / "summary.json", s);
-  if (stats.stopped_at_rest)
-    std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
-  std::cout << "runout " << s.runout_m << " m (" << s.runout_thick_m << " m where H0/10 thick), height "
-            << s.height_m << " m, repose angle " << s.repose_angle_deg << " deg, max speed at end "
-            << s.max_speed_end << " m/s, wall guard acted " << stats.guard_corrections << " times, "
+}
+
+void run_collapse(const CollapseOptions& o) {
+  using namespace soilsph::sph;
+  if (o.resume.empty() == o.scene.empty())
+    throw ParameterError(o.scene.empty() ? "soilsph collapse needs a SCENE file, or --resume DIR"
+                                         : "soilsph collapse takes a SCENE file or --resume DIR, not both");
+  const fs::path dir = o.resume.empty() ? fs::path(o.out) : fs::path(o.resume);
+  std::optional<Checkpoint> resumed;
+  if (!o.resume.empty()) {
+    check_resumable(o.overrides);
+    resumed = read_checkpoint(dir / "checkpoint.h5");
+  }
+  const Scene scene = resumed ? parse_scene(resumed->scene_toml, (dir / "checkpoint.h5").string() + " (scene)",
+                                            o.overrides)
+                              : load_scene(o.scene, o.overrides);
+  const ThreadTuner tuner = thread_tuner(o.threads);
+  const RunEstimate estimate = estimate_run(scene);
+  check_feasible(scene, estimate, 0.8 * physical_memory());
+
+  Collapse collapse = resumed ? Collapse(scene, std::move(resumed->particles)) : Collapse(scene);
+  if (resumed && collapse.particles().soil_count != estimate.soil_particles)
+    throw std::runtime_error((dir / "checkpoint.h5").string() + " holds " +
+                             std::to_string(collapse.particles().soil_count) + " soil particles; its scene has " +
+                             std::to_string(estimate.soil_particles));
+  const Particles& particles = collapse.particles();
+  const SolverSetup& setup = collapse.setup();
+  std::cout << (resumed ? dir.string() + " (resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s)"
+                        : o.scene)
+            << ": " << model_name(scene.material) << ", " << particles.soil_count << " soil + "
+            << particles.boundary_count() << " boundary particles, h = " << setup.kernel.smoothing_length()
+            << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step()
+            << " s at rest, to t = " << scene.geometry.end_time << " s" << (scene.rest.enabled ? " or rest" : "")
+            << " (at most about " << human_duration(estimate.seconds) << "), " << tuner.threads() << " thread(s)"
+            << (o.threads == "auto" ? " (auto: fewer while they are slower)" : "") << std::endl;
+
+  // Nothing of an earlier run may stay beside this one's frames; the record is written first, so
+  // that even a run killed at once says what it was.
+  if (!resumed) remove_stale_results(dir);
+  FrameWriter writer =
+      resumed ? FrameWriter::continuing(dir, scene.output.fields, resumed->loop.stats.end_time)
+              : FrameWriter(dir, scene.output.fields);
+  replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
+                                       std::string(kVersion) + ")\n# " + invocation() + "\n" + scene_toml(scene));
+  Summary summary = describe(scene, collapse, tuner.threads());
+  if (resumed) {
+    summary.resumed_from = resumed->loop.stats.end_time;
+    add_results(summary, resumed->loop.stats, collapse);
+  }
+  write_summary_json(dir / "summary.json", summary);
+
+  FrameBuffers buffers;
+  Progress progress(scene.geometry.end_time);
+  const StopSignal signal;
+  RunControl control;
+  control.stop_requested = [&] { return signal.received() != 0; };
+  const std::string scene_text = scene_toml(scene);
+  control.checkpoint = [&](const Particles& p, const LoopState& loop) {
+    write_checkpoint(dir / "checkpoint.h5", p, loop, scene_text);
+  };
+  if (resumed) control.resume = &resumed->loop;
+  const auto on_frame = [&](const Particles& p, double t) { writer.write(buffers.view(p, t, scene.output.fields)); };
+  const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
+  RunStatistics stats;
+  try {
+    stats = collapse.run(tuner, on_frame, on_step, control);
+  } catch (const std::exception& e) {
+    progress.finish();
+    summary.stop_reason = e.what();
+    write_summary_json(dir / "summary.json", summary);  // complete: false, and why
+    throw;
+  }
+  progress.finish();
+  add_results(summary, stats, collapse);
+  summary.complete = stats.stop != StopReason::Request;
+  summary.stop_reason = stats.stop == StopReason::Rest      ? "at rest"
+                        : stats.stop == StopReason::EndTime ? "end time"
+                                                            : std::string("signal ") + StopSignal::name(signal.received());
+  write_summary_json(dir / "summary.json", summary);
+  if (stats.stop == StopReason::Request) {
+    std::cerr << "soilsph collapse: stopped by " << StopSignal::name(signal.received()) << " at t = " << stats.end_time
+              << " s after " << stats.steps << " steps; frames, checkpoint and summary.json are in " << dir.string()
+              << "/; continue with: soilsph collapse --resume " << dir.string() << '\n';
+    throw ExitCode{128 + signal.received()};
+  }
+  if (stats.guard_corrections > 0)
+    std::cerr << "warning: the wall guard had to push soil particles back through a wall "
+              << stats.guard_corrections << " times (0 in a sound run; a smaller [numerics] cfl)\n";
+  if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
+  std::cout << "runout " << summary.runout_m << " m (" << summary.runout_thick_m << " m where H0/10 thick), height "
+            << summary.height_m << " m, repose angle " << summary.repose_angle_deg << " deg, max speed at end "
+            << summary.max_speed_end << " m/s, wall guard acted " << stats.guard_corrections << " times, "
             << stats.fallback_stress_updates << " stress updates needed a fallback (stages/stress_update.h)\n"
-            << s.wall_seconds << " s wall, " << s.particle_steps_per_second << " particle-steps/s; output in "
-            << o.out << "/\n";
+            << summary.wall_seconds << " s wall, " << summary.particle_steps_per_second
+            << " particle-steps/s; output in " << dir.string() << "/\n";
 }
 }  // namespace
 
 void add_collapse_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("collapse", "SPH collapse of a soil column (the paper's section 5)");
   auto o = std::make_shared<CollapseOptions>();
-  cmd->add_option("SCENE", o->scene,
-                  "scene file (TOML: [scene], [initial], [material], [numerics], [output])")
-      ->required()
+  cmd->add_option("SCENE", o->scene, "scene file (TOML: [scene], [initial], [material], [numerics], [output])")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--out", o->out, "output folder (frames.h5, frames.xdmf, summary.json)")
+  cmd->add_option("--out", o->out, "output folder (frames.h5, frames.xdmf, checkpoint.h5, scene.toml, summary.json)")
       ->capture_default_str();
+  cmd->add_option("--resume", o->resume,
+                  "continue the run in this folder from its checkpoint.h5 (with --set scene.end_time=T to run "
+                  "further); frames are appended there")
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("--threads", o->threads,
                   "threads: a number (at most the cores), or auto: every core, one while the machine is too "
                   "busy for more to help")

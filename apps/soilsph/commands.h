@@ -8,6 +8,12 @@
 
 namespace soilsph::cli {
 
+/// Thrown by a command to end the process with `code` after it has reported why (a run stopped by
+/// a signal: 128 + the signal).
+struct ExitCode {
+  int code;
+};
+
 /// The command line this process was started with, words shell-quoted where needed (results record
 /// it beside the version: summary.json, point CSV headers).
 const std::string& invocation();

@@ -41,6 +41,9 @@ int main(int argc, char** argv) {
   soilsph::cli::add_collapse_command(app);
   // A closed pipe is a write error reported below, not a silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
+  // Past a file-size limit (ulimit -f) a write fails with EFBIG and is reported, instead of SIGXFSZ
+  // killing the process with a half-written file.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     app.parse(argc, argv);
     // Results written to standard output (point CSVs, reports) are lost if it is full or closed:
@@ -52,6 +55,8 @@ int main(int argc, char** argv) {
                 << (errno ? std::string(": ") + std::strerror(errno) : std::string()) << '\n';
       return 1;
     }
+  } catch (const soilsph::cli::ExitCode& e) {
+    return e.code;
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;  // --help and --version: 0; a bad command line is an input error: 2
   } catch (const soilsph::ParameterError& e) {

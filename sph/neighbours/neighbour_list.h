@@ -67,6 +67,10 @@ class NeighbourList {
   std::size_t pair_count(std::size_t i) const { return count_[i]; }
 
   std::size_t size() const { return count_.size(); }
+  /// The positions of the last search (a resumed run searches from them again to get the same
+  /// candidates in the same order).
+  const std::vector<double>& search_x() const { return x_ref_; }
+  const std::vector<double>& search_y() const { return y_ref_; }
   /// Cell-list searches done so far.
   std::size_t searches() const { return searches_; }
   /// Bytes held per particle by the list (pairs and candidates).

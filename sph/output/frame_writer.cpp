@@ -2,8 +2,8 @@
 #include "sph/output/frame_writer.h"
 
 #include "sph/output/atomic_file.h"
-
-#include <hdf5.h>
+#include "sph/output/disk_space.h"
+#include "sph/output/hdf5_file.h"
 
 #include <array>
 #include <charconv>
@@ -24,67 +24,19 @@ constexpr const char* kConventions =
     "SI units; x horizontal, y vertical (up), z = 0 (2D plane strain); stress components sxx, syy, "
     "szz, sxy tension-positive; p = -tr(sigma)/3 and q = sqrt(3/2 s:s) compression-positive";
 
-/// Owns one HDF5 identifier and closes it with the matching H5?close.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) throw std::runtime_error("HDF5: cannot " + what);
-  }
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  /// Closes now and reports failure (a file's close writes its metadata).
-  void close(const std::string& what) {
-    const herr_t status = close_(id_);
-    id_ = -1;
-    if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  operator hid_t() const { return id_; }
+using hdf5::check;
+using hdf5::Handle;
+using hdf5::write_dataset;
+using hdf5::write_double_attribute;
+using hdf5::write_string_attribute;
 
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
-}
-
-/// The writer takes no HDF5 file lock (HDF5 ≥ 1.10.7): a viewer that keeps frames.h5 open (h5py,
-/// ParaView) holds a shared lock, and a locking writer could then not reopen the file for the next
-/// frame and the run would fail. The lock would only guard against a second run writing into the
-/// same folder at the same time, which is a user error either way.
-void allow_concurrent_readers(hid_t file_access) {
-#if H5_VERSION_GE(1, 10, 7)
-  check(H5Pset_file_locking(file_access, false, true), "disable HDF5 file locking");
-#else
-  (void)file_access;
-#endif
-}
+/// Bytes of HDF5 metadata (superblock, group, dataset headers) allowed for besides the data.
+constexpr std::uintmax_t kFileOverhead = 64 * 1024;
 
 std::string frame_name(std::size_t index) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%06zu", index);
   return name;
-}
-
-/// Writes a contiguous dataset of `rows` × `columns` (columns = 1: a 1-D dataset).
-void write_dataset(hid_t group, const std::string& name, hid_t file_type, hid_t memory_type, std::size_t rows,
-                   std::size_t columns, const void* data, const std::string& where) {
-  const std::array<hsize_t, 2> dims{rows, columns};
-  const Handle space(H5Screate_simple(columns == 1 ? 1 : 2, dims.data(), nullptr), H5Sclose,
-                     "create the dataspace of " + where + name);
-  const Handle set(H5Dcreate2(group, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                   H5Dclose, "create dataset " + where + name);
-  if (rows > 0)
-    check(H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write " + where + name);
-}
-
-void write_double(hid_t group, const std::string& name, std::span<const double> values,
-                  const std::string& where) {
-  write_dataset(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.size(), 1, values.data(), where);
 }
 
 /// Interleaves two components with z = 0 into an N×3 array (XDMF XYZ geometry and vectors).
@@ -95,22 +47,6 @@ std::vector<double> xyz(std::span<const double> a, std::span<const double> b) {
     out[3 * i + 1] = b[i];
   }
   return out;
-}
-
-void write_string_attribute(hid_t object, const char* name, const std::string& value) {
-  const Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "copy the string type");
-  check(H5Tset_size(type, value.size() + 1), "size a string attribute");
-  const Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
-  const Handle attribute(H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
-                         std::string("create attribute ") + name);
-  check(H5Awrite(attribute, type, value.c_str()), std::string("write attribute ") + name);
-}
-
-void write_double_attribute(hid_t object, const char* name, double value) {
-  const Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a scalar dataspace");
-  const Handle attribute(H5Acreate2(object, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
-                         std::string("create attribute ") + name);
-  check(H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value), std::string("write attribute ") + name);
 }
 
 /// Shortest text that reads back to the same double (XDMF Time values).
@@ -160,13 +96,41 @@ std::string dimensions(std::size_t particles, int components) {
 FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields)
     : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf"), fields_(fields) {
   std::filesystem::create_directories(dir);
-  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a file-access property list");
-  allow_concurrent_readers(access);
+  ensure_room(h5_path_, kFileOverhead);
+  const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
   Handle file(H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose,
               "create " + h5_path_.string());
   write_string_attribute(file, "conventions", kConventions);
   file.close("close " + h5_path_.string());
   write_xdmf();
+}
+
+FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields, Continuing)
+    : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf"), fields_(fields) {}
+
+FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet fields, double last_kept) {
+  FrameWriter writer(dir, fields, Continuing{});
+  const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
+  Handle file(H5Fopen(writer.h5_path_.c_str(), H5F_ACC_RDWR, access), H5Fclose,
+              "open " + writer.h5_path_.string());
+  for (std::size_t index = 0;; ++index) {
+    const std::string name = frame_name(index);
+    if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) break;
+    const Handle group(H5Gopen2(file, name.c_str(), H5P_DEFAULT), H5Gclose, "open group " + name);
+    const double time = hdf5::read_double_attribute(group, "time");
+    if (time > last_kept) {
+      check(H5Ldelete(file, name.c_str(), H5P_DEFAULT), "delete " + name + ", written after the checkpoint");
+      continue;
+    }
+    const Handle set(H5Dopen2(group, "position", H5P_DEFAULT), H5Dclose, "open " + name + "/position");
+    const Handle space(H5Dget_space(set), H5Sclose, "read the dataspace of " + name + "/position");
+    std::array<hsize_t, 2> dims{};
+    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+    writer.frames_.push_back({time, static_cast<std::size_t>(dims[0])});
+  }
+  file.close("close " + writer.h5_path_.string());
+  writer.write_xdmf();
+  return writer;
 }
 
 void FrameWriter::write(const Frame& frame) {
@@ -194,10 +158,13 @@ void FrameWriter::write(const Frame& frame) {
   if (has(Field::layer)) check_size(frame.layer.size());
   const std::string name = frame_name(frames_.size());
   const std::string where = h5_path_.string() + ":/" + name + "/";
+  // Room first: a write that fails half-way can leave the file unreadable, earlier frames included.
+  std::uintmax_t values = 3 * n;
+  for (const XdmfField& f : kFields) values += fields_.contains(f.field) ? f.components * n : 0;
+  ensure_room(h5_path_, 8 * values + (frames_.empty() ? 8 * n : 0) + kFileOverhead);
   // The file is open only while a frame is written: a reader that opens it between writes finds
   // it complete and consistent (closing writes all metadata).
-  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a file-access property list");
-  allow_concurrent_readers(access);
+  const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
   Handle file(H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, access), H5Fclose, "open " + h5_path_.string());
   {
     const Handle group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
@@ -212,18 +179,18 @@ void FrameWriter::write(const Frame& frame) {
     if (has(Field::speed)) {
       std::vector<double> speed(n);
       for (std::size_t i = 0; i < n; ++i) speed[i] = std::hypot(frame.vx[i], frame.vy[i]);
-      write_double(group, "speed", speed, where);
+      hdf5::write_doubles(group, "speed", speed, where);
     }
     if (has(Field::stress)) {
-      write_double(group, "sxx", frame.sxx, where);
-      write_double(group, "syy", frame.syy, where);
-      write_double(group, "szz", frame.szz, where);
-      write_double(group, "sxy", frame.sxy, where);
+      hdf5::write_doubles(group, "sxx", frame.sxx, where);
+      hdf5::write_doubles(group, "syy", frame.syy, where);
+      hdf5::write_doubles(group, "szz", frame.szz, where);
+      hdf5::write_doubles(group, "sxy", frame.sxy, where);
     }
-    if (has(Field::p)) write_double(group, "p", frame.p, where);
-    if (has(Field::q)) write_double(group, "q", frame.q, where);
-    if (has(Field::plastic_strain)) write_double(group, "plastic_strain", frame.plastic_strain, where);
-    if (has(Field::density)) write_double(group, "density", frame.density, where);
+    if (has(Field::p)) hdf5::write_doubles(group, "p", frame.p, where);
+    if (has(Field::q)) hdf5::write_doubles(group, "q", frame.q, where);
+    if (has(Field::plastic_strain)) hdf5::write_doubles(group, "plastic_strain", frame.plastic_strain, where);
+    if (has(Field::density)) hdf5::write_doubles(group, "density", frame.density, where);
     if (has(Field::layer))
       write_dataset(group, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
   }

@@ -23,6 +23,11 @@ class FrameWriter {
   /// Creates DIR if needed and truncates DIR/frames.h5 and DIR/frames.xdmf. Every frame holds the
   /// positions and the datasets of `fields` (default: all), and the XDMF index lists only those.
   explicit FrameWriter(const std::filesystem::path& dir, FieldSet fields = FieldSet::all());
+  /// Continues the frames of DIR (a resumed run): keeps those up to time `last_kept` and deletes the
+  /// later ones, which a run wrote after the checkpoint it is resumed from. Throws std::runtime_error
+  /// if DIR/frames.h5 cannot be opened.
+  static FrameWriter continuing(const std::filesystem::path& dir, FieldSet fields, double last_kept);
+  FrameWriter(FrameWriter&&) = default;
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
 
@@ -46,6 +51,8 @@ class FrameWriter {
     std::size_t particles;
   };
   void write_xdmf() const;
+  struct Continuing {};
+  FrameWriter(const std::filesystem::path& dir, FieldSet fields, Continuing);
 
   std::filesystem::path h5_path_, xdmf_path_;
   FieldSet fields_;

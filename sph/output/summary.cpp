@@ -59,6 +59,13 @@ std::string number(double value) {
   return std::string(text, result.ptr);
 }
 
+/// A nested JSON text indented one level further (it follows a key of the top-level object).
+std::string indented(const std::string& json) {
+  std::string out;
+  for (const char c : json) out += c == '\n' ? std::string("\n  ") : std::string(1, c);
+  return out;
+}
+
 }  // namespace
 
 std::string summary_json(const Summary& s) {
@@ -92,6 +99,12 @@ std::string summary_json(const Summary& s) {
   field("stopped_at_rest", s.stopped_at_rest ? "true" : "false");
   field("guard_corrections", std::to_string(s.guard_corrections));
   field("fallback_stress_updates", std::to_string(s.fallback_stress_updates));
+  field("complete", s.complete ? "true" : "false");
+  field("stop_reason", quoted(s.stop_reason));
+  field("resumed_from", s.resumed_from >= 0 ? number(s.resumed_from) : "null");
+  field("version", quoted(s.version));
+  field("command_line", quoted(s.command_line));
+  if (!s.inputs_json.empty()) field("inputs", indented(s.inputs_json));
   return out + "\n}\n";
 }
 

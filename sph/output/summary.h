@@ -21,6 +21,15 @@ struct Summary {
   std::size_t guard_corrections = 0;  ///< times the wall guard acted (0 in a sound run)
   std::size_t fallback_stress_updates =
       0;  ///< stress updates whose first attempt failed (split, substep or stress-free)
+  /// The run reached its end time or rest; false while it runs and after a failure or a signal.
+  bool complete = false;
+  /// Why the run stopped: "end time", "at rest", "running" (written at the start: the record a
+  /// killed run leaves), "signal SIGTERM", or the error that ended it.
+  std::string stop_reason = "running";
+  std::string version;       ///< soilsph version and git commit
+  std::string command_line;  ///< as typed, shell-quoted
+  std::string inputs_json;   ///< the scene as run (Scene::resolved) as a JSON object, or empty
+  double resumed_from = -1;  ///< time of the checkpoint this run resumed from (s); < 0: none
 };
 
 /// Writes the summary as one flat JSON object (numbers in shortest round-trip form, non-finite

@@ -40,6 +40,10 @@ class StepFailure {
   std::size_t fallback_updates() const {
     return fallback_updates_.load(std::memory_order_relaxed);
   }
+  /// Continues the count of a run that is resumed.
+  void restore_fallback_updates(std::size_t count) {
+    fallback_updates_.store(count, std::memory_order_relaxed);
+  }
 
  private:
   std::optional<std::string> message_;

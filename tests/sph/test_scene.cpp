@@ -103,11 +103,67 @@ TEST_CASE("the initial stress is geostatic and inside the yield surface", "[scen
   const double pb = (1 + 2 * k0) / 3 * rho * g * (H + dx / 2), qb = (1 - k0) * rho * g * (H + dx / 2);
   CHECK(p.state[base].pc == Approx(pb + qb * qb / (mcc.M() * mcc.M() * pb)));
 
-  // A lateral stress ratio the D-P cone cannot hold (K0 = 0.3: √J2 > −α_φ I1) is rejected.
-  const Scene loose = test::shipped_scene(
-      "collapse-dp", {"scene.particle_spacing=0.004", "initial.lateral_stress_ratio=0.3"});
-  Particles q = build_particles(loose);
-  CHECK_THROWS_WITH(set_geostatic_state(q, loose), Contains("lateral_stress_ratio"));
+  // A lateral stress ratio the D-P cone cannot hold (K0 = 0.3: √J2 > −α_φ I1) is rejected when read,
+  // with the bound (next test case) in the message.
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.004", "initial.lateral_stress_ratio=0.3"}),
+                    Contains("lateral_stress_ratio = 0.3") && Contains("0.4209"));
+}
+
+/// The D-P cone's bound on K0 for a cohesionless soil: with σxx = σzz = K0 σyy, √J2 = (1 − K0)|σyy|/√3
+/// and I1 = (1 + 2K0) σyy, so f = 0 (eq 17) at K0 = (1 − √3 α_φ)/(1 + 2√3 α_φ), α_φ from eq 19.
+double dp_lowest_k0(double phi_degrees) {
+  const double t = std::tan(phi_degrees * M_PI / 180.0), alpha = t / std::sqrt(9.0 + 12.0 * t * t);
+  return (1.0 - std::sqrt(3.0) * alpha) / (1.0 + 2.0 * std::sqrt(3.0) * alpha);
+}
+
+TEST_CASE("the default K0 is admissible for every friction angle, and the error states the bound",
+          "[scene][initial]") {
+  CHECK(dp_lowest_k0(35.0) == Approx(0.4209).margin(1e-4));  // below ν/(1−ν) = 0.4286: the elastic default holds
+  CHECK(test::shipped_scene("collapse-dp").initial.lateral_stress_ratio == Approx(0.3 / 0.7));
+  for (const double phi : {10.0, 20.0, 25.0, 30.0}) {
+    const Scene s = test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.004",
+                                                        "material.friction_angle=" + std::to_string(phi)});
+    // (the bisection's bound lies inside the yield tolerance 1e-9 of f: admissible by construction)
+    CHECK(s.initial.lateral_stress_ratio == Approx(dp_lowest_k0(phi)).epsilon(1e-8));
+    Particles p = build_particles(s);
+    CHECK_NOTHROW(set_geostatic_state(p, s));
+  }
+  // Cohesion widens the cone: the bound falls below the cohesionless one.
+  const Scene cohesive = test::shipped_scene(
+      "collapse-dp", {"scene.particle_spacing=0.004", "material.friction_angle=25", "material.cohesion=100"});
+  CHECK(cohesive.initial.lateral_stress_ratio < dp_lowest_k0(25.0));
+  CHECK(test::shipped_scene("collapse-mcc").initial.lateral_stress_ratio == Approx(0.3 / 0.7));
+}
+
+TEST_CASE("a spacing that does not divide the column is an error naming the nearest that do", "[scene]") {
+  // 4 cm x 6 cm: a spacing W/m divides H when 1.5 m is whole, i.e. m even: 0.04/12 and 0.04/14 around 3 mm.
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.003"}),
+                    Contains("particle_spacing") && Contains("0.00333333 m and 0.00285714 m"));
+  CHECK_NOTHROW(test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.0025"}));  // 16 x 24
+}
+
+TEST_CASE("inputs whose column weight overflows are named as such, not blamed on K0", "[scene]") {
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"material.density=1e308"}),
+                    Contains("weight of the column overflows"));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.gravity=1e308"}),
+                    Contains("gravity = 1e+308 is out of range"));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.column_height=1e308"}),
+                    !Contains("lateral_stress_ratio"));
+}
+
+TEST_CASE("the scene as run reads back to the same scene, defaults resolved", "[scene][record]") {
+  const Scene s = test::shipped_scene("collapse-mcc", {"scene.particle_spacing=0.002"});
+  // Keys the file leaves to defaults are in the record with their values.
+  CHECK(s.resolved["initial"]["lateral_stress_ratio"].value<double>() == s.initial.lateral_stress_ratio);
+  CHECK(s.resolved["numerics"]["artificial_stress_exponent"].value<double>() == 2.55);
+  CHECK(s.resolved["material"]["implicit_alpha"].value<double>() == 0.5);
+  CHECK(s.resolved["scene"]["rest_speed"].value<double>() == s.rest.speed);
+  const Scene again = parse_scene(scene_toml(s), "scene.toml");
+  CHECK(scene_toml(again) == scene_toml(s));
+  CHECK(again.geometry.particle_spacing == 0.002);
+  CHECK(again.rest.duration == s.rest.duration);
+  CHECK(std::get<ModifiedCamClay>(again.material).M() == std::get<ModifiedCamClay>(s.material).M());
+  CHECK(scene_json(s).find("\"lateral_stress_ratio\"") != std::string::npos);
 }
 
 TEST_CASE("the time step is the CFL step on the elastic P-wave speed", "[scene][time-step]") {

@@ -21,7 +21,9 @@ struct FreeFall {
                     WallGuard{-1e9, 1e9, std::nullopt},
                     false,
                     false,
-                    RestCriterion{}};
+                    RestCriterion{},
+                    Domain{},
+                    0.0};
   FreeFall() {
     setup.momentum.gravity = 9.81;
     setup.momentum.smoothing_length = 1.3e-3;

@@ -1,0 +1,85 @@
+#include "sph/feasibility.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "sph/initial_state.h"
+#include "sph/solver.h"
+
+namespace soilsph::sph {
+
+namespace {
+/// Lattice points along `length` at `spacing` (as initial_state.cpp builds them), without overflow.
+double points(double length, double spacing) { return std::round(length / spacing) + 1.0; }
+}  // namespace
+
+RunEstimate estimate_run(const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  const double dx = g.particle_spacing, layers = g.boundary_layers;
+  const double soil = points(g.column_width, dx) * points(g.column_height, dx);
+  const double walls = g.wall_withdrawal == WallWithdrawal::None ? 2.0 : 1.0;
+  const double boundary = layers * (points(g.floor_length, dx) + layers) +
+                          walls * layers * points(g.column_height + 2.0 * g.smoothing_length(), dx);
+  RunEstimate e;
+  e.soil_particles = soil < 1e18 ? static_cast<std::size_t>(soil) : static_cast<std::size_t>(1e18);
+  e.boundary_particles = boundary < 1e18 ? static_cast<std::size_t>(boundary) : static_cast<std::size_t>(1e18);
+  e.memory_bytes = (soil + boundary) * kBytesPerParticle;
+  e.time_step = make_solver_setup(scene).initial_time_step();
+  e.steps = g.end_time / e.time_step;
+  e.seconds = e.steps * soil / kAssumedThroughput;
+  return e;
+}
+
+void check_feasible(const Scene& scene, const RunEstimate& e, double memory_available) {
+  const Geometry& g = scene.geometry;
+  std::ostringstream msg;
+  msg << scene.source << ": ";
+  if (!(e.time_step > 0.0) || !std::isfinite(e.time_step)) {
+    msg << "the time step " << e.time_step << " s is not finite and positive (check the material's stiffness)";
+    throw ParameterError(msg.str());
+  }
+  const double c = make_solver_setup(scene).sound_speed, free_fall = std::sqrt(2.0 * g.gravity * g.column_height);
+  if (c <= free_fall) {
+    msg << "the soil is too soft to carry its own weight: its P-wave speed c = " << c
+        << " m/s is below the free-fall speed sqrt(2 g H) = " << free_fall
+        << " m/s, where the weakly compressible scheme needs |v| << c (raise [material] young_modulus)";
+    throw ParameterError(msg.str());
+  }
+  if (e.memory_bytes > memory_available) {
+    msg << "the scene needs about " << e.memory_bytes / 1e9 << " GB for " << static_cast<double>(e.soil_particles)
+        << " soil and " << static_cast<double>(e.boundary_particles) << " boundary particles; this machine has "
+        << memory_available / 1e9 << " GB (a larger [scene] particle_spacing)";
+    throw ParameterError(msg.str());
+  }
+  const double limit = scene.limits.max_run_hours * 3600.0;
+  if (e.seconds > limit) {
+    msg << "the run would take about " << human_duration(e.seconds) << " (" << e.steps << " steps of "
+        << e.time_step << " s to [scene] end_time = " << g.end_time << " s with "
+        << static_cast<double>(e.soil_particles) << " soil particles), more than [scene] max_run_hours = "
+        << scene.limits.max_run_hours << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
+    throw ParameterError(msg.str());
+  }
+}
+
+double physical_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e12;
+}
+
+std::string human_duration(double seconds) {
+  char text[64];
+  if (seconds < 120)
+    std::snprintf(text, sizeof text, "%.3g s", seconds);
+  else if (seconds < 7200)
+    std::snprintf(text, sizeof text, "%.3g min", seconds / 60);
+  else if (seconds < 2 * 86400)
+    std::snprintf(text, sizeof text, "%.3g h", seconds / 3600);
+  else
+    std::snprintf(text, sizeof text, "%.3g days", seconds / 86400);
+  return text;
+}
+
+}  // namespace soilsph::sph

@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// What a scene will cost, estimated and checked before anything is allocated or stepped: a run
+/// that cannot fit in memory, would take longer than the scene allows, or has no meaningful time
+/// step is refused with the numbers, instead of ending in std::bad_alloc, 2.5e13 silent steps or a
+/// "complete" run of zero steps.
+#include <cstddef>
+#include <string>
+
+#include "sph/scene.h"
+
+namespace soilsph::sph {
+
+struct RunEstimate {
+  std::size_t soil_particles = 0, boundary_particles = 0;
+  double memory_bytes = 0;  ///< particles, states, neighbour list, step buffers
+  double time_step = 0;     ///< s, the CFL step at rest: the largest the run takes while c holds
+  double steps = 0;         ///< to the end time at that step: the fewest it can take
+  double seconds = 0;       ///< steps × soil particles at kAssumedThroughput
+};
+
+/// Particle-steps per second assumed by the estimate: the slowest measured one-thread rate
+/// (MCC with `implicit`, 0.6e6; D-P runs 1.3–2.2e6; docs/sph.md, Performance), rounded down.
+inline constexpr double kAssumedThroughput = 5e5;
+/// Bytes per particle (soil or ghost): measured 2645 B with 48 neighbour slots (docs/sph.md).
+inline constexpr double kBytesPerParticle = 2700;
+
+RunEstimate estimate_run(const Scene& scene);
+
+/// Throws ParameterError, naming the scene, the numbers and the key that changes them, if the time
+/// step is not finite and positive, the soil is too soft to carry its own weight (P-wave speed below
+/// the free-fall speed √(2gH): the weakly compressible scheme needs |v| ≪ c), the memory exceeds
+/// `memory_available` bytes, or the estimated run time exceeds [scene] max_run_hours.
+void check_feasible(const Scene& scene, const RunEstimate& estimate, double memory_available);
+
+/// Physical memory of this machine (bytes).
+double physical_memory();
+
+/// "2.5 min", "3.1 h", "4.2e+03 days": a duration for messages.
+std::string human_duration(double seconds);
+
+}  // namespace soilsph::sph
