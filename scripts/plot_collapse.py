@@ -48,6 +48,16 @@ class Run:
         summary_file = self.dir / "summary.json"
         self.summary = json.loads(summary_file.read_text()) if summary_file.exists() else {}
         self.label = self.summary.get("model") or self.dir.name
+        # A run that did not finish is said so on every picture, and its figures are not quoted
+        # (summary.json "complete" and "stop_reason"; docs/sph-output.md, Run records).
+        self.complete = self.summary.get("complete") is True
+        if not self.complete:
+            why = (f"stopped: {self.summary['stop_reason']}" if self.summary.get("stop_reason")
+                   else "no summary.json: killed, or still running")
+            if self.summary.get("stop_reason") == "running":
+                why = "not finished: killed, or still running"
+            print(f"plot_collapse: warning: {self.dir} is an incomplete run ({why[:200]})", file=sys.stderr)
+            self.label += " [INCOMPLETE RUN]"
         spacing = self.summary.get("particle_spacing") or 0.0
         self.spacing = spacing if spacing > 0 else self.estimate_spacing()
 
@@ -169,7 +179,7 @@ def plot_deposit(run):
                linewidths=0, zorder=2)
     title = f"{run.label}: deposit at t = {final['time']:.3f} s"
     s = run.summary
-    if all(isinstance(s.get(key), (int, float)) for key in ("runout_m", "height_m", "repose_angle_deg")):
+    if run.complete and all(isinstance(s.get(key), (int, float)) for key in ("runout_m", "height_m", "repose_angle_deg")):
         title += (f"\nrunout {s['runout_m'] * CM:.2f} cm, height {s['height_m'] * CM:.2f} cm, "
                   f"repose angle {s['repose_angle_deg']:.1f}°")
     ax.set_title(title)
@@ -201,7 +211,7 @@ def plot_profiles(runs):
         label = f"{run.label}, dx = {run.spacing * 1e3:g} mm (t = {final['time']:.2f} s)"
         line, = ax.plot(x, y, linewidth=1.8, label=label)
         runout = run.summary.get("runout_m")
-        if isinstance(runout, (int, float)):  # the toe the runout measures, from the initial right edge
+        if run.complete and isinstance(runout, (int, float)):  # the toe the runout measures, from the initial right edge
             toe = (run.frame(0)["x"].max() - runout) * CM
             ax.plot([toe], [limits[2]], marker="^", markersize=9, color=line.get_color(), clip_on=False,
                     zorder=4)

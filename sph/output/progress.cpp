@@ -1,4 +1,4 @@
-// Progress: one line redrawn in place with a carriage return, only on a terminal.
+// Progress: one line redrawn in place with a carriage return on a terminal, plain lines in a log.
 #include "sph/output/progress.h"
 
 #include <unistd.h>
@@ -39,10 +39,12 @@ std::string format_progress(double time, double end_time, std::size_t steps, dou
   return text;
 }
 
-Progress::Progress(double end_time) : Progress(end_time, std::cerr, isatty(STDERR_FILENO) == 1) {}
+Progress::Progress(double end_time)
+    : Progress(end_time, isatty(STDERR_FILENO) == 1 ? std::cerr : std::cout,
+               isatty(STDERR_FILENO) == 1 ? Style::Terminal : Style::Log) {}
 
-Progress::Progress(double end_time, std::ostream& out, bool enabled)
-    : end_time_(end_time), out_(&out), enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+Progress::Progress(double end_time, std::ostream& out, Style style)
+    : end_time_(end_time), out_(&out), style_(style), start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() {
   try {
@@ -54,16 +56,22 @@ Progress::~Progress() {
 void Progress::update(double time, std::size_t steps) {
   last_time_ = time;
   last_steps_ = steps;
-  if (!enabled_ || finished_) return;
+  if (style_ == Style::Off || finished_) return;
   const auto now = std::chrono::steady_clock::now();
-  if (drawn_ && now - last_draw_ < min_interval) return;
+  if (style_ == Style::Log) {
+    const int tenths = end_time_ > 0 ? static_cast<int>(std::floor(10.0 * time / end_time_)) : 10;
+    if (tenths <= logged_tenths_ && (drawn_ ? now - last_draw_ : now - start_) < log_interval) return;
+    logged_tenths_ = std::max(logged_tenths_, tenths);
+  } else if (drawn_ && now - last_draw_ < min_interval) {
+    return;
+  }
   draw(time, steps);
 }
 
 void Progress::finish() {
   if (finished_) return;
   finished_ = true;
-  if (!enabled_) return;
+  if (style_ != Style::Terminal) return;  // a log's last line is the run's own report
   draw(last_time_, last_steps_);
   *out_ << '\n' << std::flush;
 }
@@ -71,8 +79,12 @@ void Progress::finish() {
 void Progress::draw(double time, std::size_t steps) {
   last_draw_ = std::chrono::steady_clock::now();
   const double elapsed = std::chrono::duration<double>(last_draw_ - start_).count();
-  // "\r" returns to the line start; "\033[K" clears what a longer previous line left behind.
-  *out_ << '\r' << format_progress(time, end_time_, steps, elapsed) << "\033[K" << std::flush;
+  if (style_ == Style::Log) {
+    *out_ << "progress: " << format_progress(time, end_time_, steps, elapsed) << std::endl;
+  } else {
+    // "\r" returns to the line start; "\033[K" clears what a longer previous line left behind.
+    *out_ << '\r' << format_progress(time, end_time_, steps, elapsed) << "\033[K" << std::flush;
+  }
   drawn_ = true;
 }
 

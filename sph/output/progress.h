@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// A one-line progress indicator (simulated time, steps, elapsed and remaining wall time) redrawn
-/// in place on a terminal; silent when stderr is not a terminal, so logs and CI output stay clean.
+/// in place on a terminal; in a log (stderr not a terminal) a plain line on stdout at every tenth of
+/// the run and at least every minute, so that a batch job's log shows it is alive and when it ends.
 #include <chrono>
 #include <cstddef>
 #include <ostream>
@@ -13,13 +14,20 @@ namespace soilsph::sph {
 /// seconds of wall time; the ETA extrapolates the wall time per simulated second so far.
 std::string format_progress(double time, double end_time, std::size_t steps, double elapsed_s);
 
-/// A one-line progress indicator on a terminal (isatty(stderr)), silent otherwise.
 class Progress {
  public:
-  /// Draws on std::cerr if stderr is a terminal, else stays silent.
+  enum class Style {
+    Terminal,  ///< one line redrawn in place
+    Log,       ///< a plain line at every tenth of the run and at least every `log_interval`
+    Off,
+  };
+  /// Terminal on std::cerr if stderr is a terminal, else Log on std::cout.
   explicit Progress(double end_time);
-  /// Draws on `out` if `enabled` (for tests and other streams).
-  Progress(double end_time, std::ostream& out, bool enabled);
+  /// Draws on `out` in `style` (for tests and other streams).
+  Progress(double end_time, std::ostream& out, Style style);
+  /// Terminal if `enabled`, else Off.
+  Progress(double end_time, std::ostream& out, bool enabled)
+      : Progress(end_time, out, enabled ? Style::Terminal : Style::Off) {}
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
@@ -31,13 +39,17 @@ class Progress {
 
   /// Minimum wall time between redraws (default 0.2 s).
   std::chrono::duration<double> min_interval{0.2};
+  /// Longest wall time between two log lines (default 60 s).
+  std::chrono::duration<double> log_interval{60.0};
 
  private:
   void draw(double time, std::size_t steps);
 
   double end_time_;
   std::ostream* out_;
-  bool enabled_, drawn_ = false, finished_ = false;
+  Style style_;
+  bool drawn_ = false, finished_ = false;
+  int logged_tenths_ = 0;  ///< tenths of the run already logged
   double last_time_ = 0.0;
   std::size_t last_steps_ = 0;
   std::chrono::steady_clock::time_point start_, last_draw_;

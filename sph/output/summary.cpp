@@ -1,5 +1,6 @@
-// summary.json written by hand: a flat object of strings and numbers needs no JSON library, only
-// correct string escaping and numbers that read back exactly.
+// summary.json written by hand: an object of strings and numbers needs no JSON library, only
+// correct string escaping and numbers that read back exactly; the nested "inputs" object is
+// toml++'s JSON rendering of the scene as run.
 #include "sph/output/summary.h"
 
 #include "sph/output/atomic_file.h"

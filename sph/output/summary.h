@@ -32,7 +32,7 @@ struct Summary {
   double resumed_from = -1;  ///< time of the checkpoint this run resumed from (s); < 0: none
 };
 
-/// Writes the summary as one flat JSON object (numbers in shortest round-trip form, non-finite
+/// Writes the summary as one JSON object (numbers in shortest round-trip form, non-finite
 /// numbers as null); the file is replaced atomically. Throws std::runtime_error on I/O failure.
 void write_summary_json(const std::filesystem::path& file, const Summary& summary);
 

@@ -46,3 +46,23 @@ TEST_CASE("an enabled progress line redraws in place and ends with a newline", "
   progress.update(0.3, 30);  // after finish: nothing more
   CHECK(out.str() == text);
 }
+
+TEST_CASE("in a log, progress is a plain line at every tenth of the run and after a quiet minute",
+          "[progress]") {
+  std::ostringstream out;
+  Progress progress(1.0, out, Progress::Style::Log);
+  for (int k = 1; k <= 1000; ++k) progress.update(k * 1e-3, static_cast<std::size_t>(k));  // 0.001 ... 1 s
+  progress.finish();
+  const std::string text = out.str();
+  std::size_t lines = 0;
+  for (const char c : text) lines += c == '\n';
+  CHECK(lines == 10);  // at 10 %, 20 %, ..., 100 %
+  CHECK(text.find('\r') == std::string::npos);
+  CHECK(text.find("progress: t = 0.1000 / 1.0000 s ( 10%)") == 0);
+  std::ostringstream slow;
+  Progress quiet(1.0, slow, Progress::Style::Log);
+  quiet.log_interval = std::chrono::duration<double>(0);  // "a minute" has passed at every step
+  quiet.update(0.001, 1);
+  quiet.update(0.002, 2);
+  CHECK(slow.str().find("steps 2") != std::string::npos);
+}

@@ -102,3 +102,22 @@ TEST_CASE("write_summary_json writes the text to the file, creating its folder",
   CHECK_FALSE(std::filesystem::exists(dir / "run" / "summary.json.tmp"));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("summary.json records completion, provenance and the inputs as a nested object", "[summary]") {
+  Summary s;
+  s.stop_reason = "blow-up: \"x\"\nsecond line";
+  s.version = "0.1.0 (abc)";
+  s.command_line = "soilsph collapse 'a b.toml'";
+  s.inputs_json = "{\n    \"scene\" : {\n        \"gravity\" : 9.81\n    }\n}";
+  const std::string json = summary_json(s);
+  CHECK(json.find("\"complete\": false") != std::string::npos);
+  CHECK(json.find("\"stop_reason\": \"blow-up: \\\"x\\\"\\nsecond line\"") != std::string::npos);
+  CHECK(json.find("\"resumed_from\": null") != std::string::npos);
+  CHECK(json.find("\"command_line\": \"soilsph collapse 'a b.toml'\"") != std::string::npos);
+  CHECK(json.find("\"inputs\": {\n      \"scene\" : {\n          \"gravity\" : 9.81\n      }\n  }\n}") !=
+        std::string::npos);
+  s.complete = true;
+  s.resumed_from = 0.25;
+  CHECK(summary_json(s).find("\"complete\": true") != std::string::npos);
+  CHECK(summary_json(s).find("\"resumed_from\": 0.25") != std::string::npos);
+}

@@ -76,6 +76,8 @@ void write_run(const std::filesystem::path& dir, const std::string& model, doubl
   summary.particle_spacing = kSpacing;
   summary.smoothing_ratio = 1.2;
   summary.time_step = 0.01;
+  summary.complete = true;
+  summary.stop_reason = "end time";
   write_summary_json(dir / "summary.json", summary);
 }
 

@@ -1,0 +1,224 @@
+// Fault tests of `soilsph collapse` as a user meets them: a signal or kill -9 mid-run, a full disk,
+// a blow-up, a rerun into a used folder, a resume that would change the run. Each runs the
+// executable as a child process on a coarse scene (4 mm, 176 particles) and reads what it left.
+#include <hdf5.h>
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "child_process.h"
+
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+using soilsph::test::ChildOptions;
+using soilsph::test::run_child;
+
+namespace {
+
+const fs::path kRoot = fs::path(SOILSPH_FAULT_DIR);
+
+/// A fresh folder for one test's runs.
+fs::path fresh(const std::string& name) {
+  const fs::path dir = kRoot / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// The D-P collapse at 4 mm to 1.5 s without stopping at rest (about 15 000 steps, a second or two),
+/// checkpoints every 0.05 s, into `out`.
+std::vector<std::string> collapse(const fs::path& out, std::vector<std::string> extra = {}) {
+  std::vector<std::string> args{SOILSPH_EXECUTABLE,
+                                "collapse",
+                                SOILSPH_SOURCE_DIR "/data/scenes/collapse-dp.toml",
+                                "--threads",
+                                "1",
+                                "--out",
+                                out.string(),
+                                "--set",
+                                "scene.particle_spacing=0.004",
+                                "--set",
+                                "scene.stop_at_rest=false",
+                                "--set",
+                                "scene.end_time=1.5",
+                                "--set",
+                                "output.checkpoint_interval=0.05"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+std::vector<std::string> resume(const fs::path& dir) {
+  return {SOILSPH_EXECUTABLE, "collapse", "--threads", "1", "--resume", dir.string()};
+}
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+/// Every dataset of every frame of DIR/frames.h5, read back (throws if any cannot be); returns the
+/// last frame's datasets by name and the number of frames.
+struct Frames {
+  std::size_t count = 0;
+  std::map<std::string, std::vector<double>> last;
+};
+
+Frames read_frames(const fs::path& dir) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t file = H5Fopen((dir / "frames.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) throw std::runtime_error("cannot open " + (dir / "frames.h5").string());
+  Frames frames;
+  for (;; ++frames.count) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06zu", frames.count);
+    if (H5Lexists(file, name, H5P_DEFAULT) <= 0) break;
+    frames.last.clear();
+    for (const char* set : {"position", "velocity", "sxx", "syy", "szz", "sxy", "p", "q", "density"}) {
+      const hid_t d = H5Dopen2(file, (std::string(name) + "/" + set).c_str(), H5P_DEFAULT);
+      if (d < 0) throw std::runtime_error(std::string("cannot open ") + name + "/" + set);
+      const hid_t space = H5Dget_space(d);
+      std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+      const herr_t status = H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+      H5Sclose(space);
+      H5Dclose(d);
+      if (status < 0) throw std::runtime_error(std::string("cannot read ") + name + "/" + set);
+      frames.last[set] = std::move(values);
+    }
+  }
+  H5Fclose(file);
+  return frames;
+}
+
+/// The last frame of the same run uninterrupted, in its own folder (ctest runs test cases in parallel).
+void check_bit_identical(const Frames& resumed, const std::string& test, std::vector<std::string> extra = {}) {
+  const fs::path dir = fresh(test + "-uninterrupted");
+  REQUIRE(run_child(collapse(dir, extra), dir / "log.txt").exit_status == 0);
+  const Frames full = read_frames(dir);
+  REQUIRE(resumed.last.size() == full.last.size());
+  for (const auto& [name, values] : full.last) {
+    INFO(name);
+    CHECK(resumed.last.at(name) == values);  // exact: every bit
+  }
+}
+
+}  // namespace
+
+TEST_CASE("SIGTERM: the run stops cleanly, and resumed it ends bit for bit as one that never stopped",
+          "[fault][resume]") {
+  const fs::path dir = fresh("sigterm");
+  ChildOptions kill_early;
+  kill_early.signal_when_exists = dir / "checkpoint.h5";
+  kill_early.signal = SIGTERM;
+  const auto stopped = run_child(collapse(dir), dir / "log.txt", kill_early);
+  INFO(stopped.log);
+  REQUIRE(stopped.exit_status == 143);
+  CHECK_THAT(stopped.log, Contains("stopped by SIGTERM at t = ") && Contains("--resume " + dir.string()));
+  const std::string summary = text_of(dir / "summary.json");
+  CHECK_THAT(summary, Contains("\"complete\": false") && Contains("\"stop_reason\": \"signal SIGTERM\""));
+  CHECK(read_frames(dir).count >= 2);
+  const auto resumed = run_child(resume(dir), dir / "resume-log.txt");
+  INFO(resumed.log);
+  REQUIRE(resumed.exit_status == 0);
+  CHECK_THAT(text_of(dir / "summary.json"),
+             Contains("\"complete\": true") && Contains("\"end_time\": 1.5,") && !Contains("\"resumed_from\": null"));
+  const Frames frames = read_frames(dir);
+  CHECK(frames.count == 152);  // t = 0, 0.01, ..., 1.5, none lost or twice, and the frame at the stop
+  check_bit_identical(frames, "sigterm");
+}
+
+TEST_CASE("kill -9: every file left is readable, and the run resumes from its last checkpoint bit for bit",
+          "[fault][resume]") {
+  const fs::path dir = fresh("kill9");
+  ChildOptions kill_hard;
+  kill_hard.signal_when_exists = dir / "checkpoint.h5";
+  kill_hard.signal = SIGKILL;
+  // Frames every 0.25 s: the kill lands between frame writes. A kill inside one (HDF5 has no
+  // journal) can tear frames.h5; docs/sph-output.md, Run records, states how often that was seen.
+  const std::vector<std::string> sparse_frames{"--set", "output.frame_interval=0.25"};
+  const auto killed = run_child(collapse(dir, sparse_frames), dir / "log.txt", kill_hard);
+  REQUIRE(killed.signal == SIGKILL);
+  CHECK_NOTHROW(read_frames(dir));
+  // The record written at the start says the run never finished.
+  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("\"stop_reason\": \"running\""));
+  const auto resumed = run_child(resume(dir), dir / "resume-log.txt");
+  INFO(resumed.log);
+  REQUIRE(resumed.exit_status == 0);
+  const Frames frames = read_frames(dir);
+  CHECK(frames.count == 7);  // t = 0, 0.25, ..., 1.5
+  check_bit_identical(frames, "kill9", sparse_frames);
+}
+
+TEST_CASE("a full disk ends the run with one line, and the frames written before stay readable", "[fault][disk]") {
+  const fs::path dir = fresh("disk-full");
+  ChildOptions small;
+  small.file_size_limit = 600 * 1024;  // frames.h5 reaches it after about 30 of 151 frames
+  const auto r = run_child(collapse(dir), dir / "log.txt", small);
+  INFO(r.log);
+  CHECK(r.signal == 0);
+  CHECK(r.exit_status == 1);
+  CHECK_THAT(r.log, Contains("error: ") && Contains("frames.h5 would grow past this process's file-size limit"));
+  CHECK(r.log.find("HDF5-DIAG") == std::string::npos);  // HDF5's own error stack stays silent
+  const Frames frames = read_frames(dir);
+  CHECK(frames.count > 5);
+  CHECK(frames.count < 151);
+  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("file-size limit"));
+  for (const auto& entry : fs::directory_iterator(dir)) CHECK(entry.path().extension() != ".tmp");
+}
+
+TEST_CASE("a blow-up stops the run, naming the particle, quantity, step and time", "[fault][blow-up]") {
+  const fs::path dir = fresh("blow-up");
+  // Twice the CFL number at which the scheme is still stable (docs/sph.md, Time step).
+  const auto r = run_child(collapse(dir, {"--set", "numerics.cfl=2.0"}), dir / "log.txt");
+  INFO(r.log);
+  CHECK(r.exit_status == 1);
+  CHECK_THAT(r.log, Contains("error: blow-up: ") && Contains("soil particle") && Contains("(step ") &&
+                        Contains("[numerics] cfl"));
+  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("blow-up"));
+  CHECK_NOTHROW(read_frames(dir));
+  CHECK(fs::exists(dir / "checkpoint.h5"));  // the last good checkpoint is kept
+}
+
+TEST_CASE("a rerun into a used folder leaves nothing of the old run beside the new one", "[fault][stale]") {
+  const fs::path dir = fresh("stale");
+  REQUIRE(run_child({SOILSPH_EXECUTABLE, "collapse", SOILSPH_SOURCE_DIR "/data/scenes/collapse-mcc.toml",
+                     "--threads", "1", "--out", dir.string(), "--set", "scene.particle_spacing=0.004", "--set",
+                     "scene.end_time=0.05"},
+                    dir / "log.txt")
+              .exit_status == 0);
+  std::ofstream(dir / "deposit.png") << "a picture of the first run";
+  // The second run, of the other model, blows up (at twice the stable CFL number).
+  const auto r = run_child(collapse(dir, {"--set", "numerics.cfl=2.0"}), dir / "log2.txt");
+  INFO(r.log);
+  CHECK(r.exit_status == 1);
+  const std::string summary = text_of(dir / "summary.json");
+  CHECK_THAT(summary, Contains("\"model\": \"drucker-prager\"") && Contains("\"complete\": false") &&
+                          Contains("blow-up"));
+  CHECK_FALSE(fs::exists(dir / "deposit.png"));
+  CHECK_THAT(text_of(dir / "scene.toml"), Contains("model = 'drucker-prager'"));
+}
+
+TEST_CASE("resuming refuses a change that would not continue the same run", "[fault][resume]") {
+  const fs::path dir = fresh("resume-refused");
+  REQUIRE(run_child(collapse(dir, {"--set", "scene.end_time=0.05"}), dir / "log.txt").exit_status == 0);
+  auto args = resume(dir);
+  args.insert(args.end(), {"--set", "material.friction_angle=30"});
+  const auto r = run_child(args, dir / "resume-log.txt");
+  CHECK(r.exit_status == 2);
+  CHECK_THAT(r.log, Contains("--set material.friction_angle=30: material.friction_angle cannot change when a run is "
+                             "resumed"));
+}
+
+TEST_CASE("DIR/scene.toml reproduces the run", "[fault][record]") {
+  const fs::path first = fresh("record-first"), second = fresh("record-second");
+  REQUIRE(run_child(collapse(first, {"--set", "scene.end_time=0.1"}), first / "log.txt").exit_status == 0);
+  REQUIRE(run_child({SOILSPH_EXECUTABLE, "collapse", (first / "scene.toml").string(), "--threads", "1", "--out",
+                     second.string()},
+                    second / "log.txt")
+              .exit_status == 0);
+  CHECK(read_frames(second).last == read_frames(first).last);
+}
