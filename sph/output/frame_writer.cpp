@@ -5,6 +5,7 @@
 #include "sph/output/disk_space.h"
 #include "sph/output/hdf5_file.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -30,8 +31,9 @@ using hdf5::write_dataset;
 using hdf5::write_double_attribute;
 using hdf5::write_string_attribute;
 
-/// Bytes of HDF5 metadata (superblock, group, dataset headers) allowed for besides the data.
-constexpr std::uintmax_t kFileOverhead = 64 * 1024;
+/// Bytes of HDF5 metadata (superblock, object headers of a dozen datasets) allowed for per file
+/// besides its data, and per link of the index.
+constexpr std::uintmax_t kFileOverhead = 16 * 1024, kLinkBytes = 256;
 
 std::string frame_name(std::size_t index) {
   char name[32];
@@ -93,15 +95,40 @@ std::string dimensions(std::size_t particles, int components) {
 
 }  // namespace
 
+namespace {
+/// A new HDF5 file written whole by `fill(file)` to PATH.tmp and renamed to PATH: a reader, a crash
+/// or kill -9 finds either the complete file or none, never a torn one.
+template <class Fill>
+void write_file_atomically(const std::filesystem::path& path, Fill&& fill) {
+  std::filesystem::path temporary = path;
+  temporary += ".tmp";
+  try {
+    const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
+    Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose,
+                "create " + temporary.string());
+    fill(file);
+    file.close("close " + temporary.string());
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) throw std::runtime_error("cannot rename " + temporary.string() + ": " + error.message());
+}
+
+/// frames/ inside the run folder, relative: the index's external links and the XDMF are relative
+/// too, so a run folder can be moved or copied whole.
+constexpr const char* kFrameFolder = "frames";
+}  // namespace
+
 FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields)
     : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf"), fields_(fields) {
   std::filesystem::create_directories(dir);
-  ensure_room(h5_path_, kFileOverhead);
-  const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
-  Handle file(H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose,
-              "create " + h5_path_.string());
-  write_string_attribute(file, "conventions", kConventions);
-  file.close("close " + h5_path_.string());
+  std::filesystem::remove_all(dir / kFrameFolder);  // an earlier run's frames
+  std::filesystem::create_directories(dir / kFrameFolder);
+  write_index();
   write_xdmf();
 }
 
@@ -110,27 +137,56 @@ FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields, Cont
 
 FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet fields, double last_kept) {
   FrameWriter writer(dir, fields, Continuing{});
-  const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
-  Handle file(H5Fopen(writer.h5_path_.c_str(), H5F_ACC_RDWR, access), H5Fclose,
-              "open " + writer.h5_path_.string());
+  // The frame files are the record; the index and the XDMF are rebuilt from them, so an index that a
+  // kill left one frame behind is repaired here.
   for (std::size_t index = 0;; ++index) {
-    const std::string name = frame_name(index);
-    if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) break;
-    const Handle group(H5Gopen2(file, name.c_str(), H5P_DEFAULT), H5Gclose, "open group " + name);
-    const double time = hdf5::read_double_attribute(group, "time");
-    if (time > last_kept) {
-      check(H5Ldelete(file, name.c_str(), H5P_DEFAULT), "delete " + name + ", written after the checkpoint");
-      continue;
+    const std::filesystem::path path = writer.frame_path(index);
+    if (!std::filesystem::exists(path)) break;
+    double time = 0.0;
+    std::size_t particles = 0;
+    {
+      const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
+      const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access), H5Fclose, "open " + path.string());
+      time = hdf5::read_double_attribute(file, "time");
+      const Handle set(H5Dopen2(file, "position", H5P_DEFAULT), H5Dclose, "open " + path.string() + ":/position");
+      const Handle space(H5Dget_space(set), H5Sclose, "read the dataspace of " + path.string() + ":/position");
+      std::array<hsize_t, 2> dims{};
+      H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+      particles = static_cast<std::size_t>(dims[0]);
     }
-    const Handle set(H5Dopen2(group, "position", H5P_DEFAULT), H5Dclose, "open " + name + "/position");
-    const Handle space(H5Dget_space(set), H5Sclose, "read the dataspace of " + name + "/position");
-    std::array<hsize_t, 2> dims{};
-    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-    writer.frames_.push_back({time, static_cast<std::size_t>(dims[0])});
+    if (time > last_kept) {  // written after the checkpoint: this frame and every later one go
+      for (std::size_t later = index; std::filesystem::remove(writer.frame_path(later)); ++later) {
+      }
+      break;
+    }
+    writer.frames_.push_back({time, particles});
   }
-  file.close("close " + writer.h5_path_.string());
+  writer.write_index();
   writer.write_xdmf();
   return writer;
+}
+
+std::filesystem::path FrameWriter::frame_path(std::size_t index) const {
+  return h5_path_.parent_path() / kFrameFolder / (frame_name(index) + ".h5");
+}
+
+void FrameWriter::write_index() const {
+  ensure_room(h5_path_, kFileOverhead + kLinkBytes * frames_.size());
+  write_file_atomically(h5_path_, [&](hid_t file) {
+    write_string_attribute(file, "conventions", kConventions);
+    std::vector<std::size_t> counts;
+    for (std::size_t index = 0; index < frames_.size(); ++index) {
+      const std::string name = frame_name(index), target = std::string(kFrameFolder) + "/" + name + ".h5";
+      check(H5Lcreate_external(target.c_str(), "/", file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+            "link " + name + " in " + h5_path_.string());
+      const std::size_t n = frames_[index].particles;
+      if (std::find(counts.begin(), counts.end(), n) != counts.end()) continue;
+      counts.push_back(n);
+      const std::string vertices = vertices_name(n), vertex_file = std::string(kFrameFolder) + "/" + vertices + ".h5";
+      check(H5Lcreate_external(vertex_file.c_str(), "/vertices", file, vertices.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+            "link " + vertices + " in " + h5_path_.string());
+    }
+  });
 }
 
 void FrameWriter::write(const Frame& frame) {
@@ -156,54 +212,49 @@ void FrameWriter::write(const Frame& frame) {
   if (has(Field::plastic_strain)) check_size(frame.plastic_strain.size());
   if (has(Field::density)) check_size(frame.density.size());
   if (has(Field::layer)) check_size(frame.layer.size());
-  const std::string name = frame_name(frames_.size());
-  const std::string where = h5_path_.string() + ":/" + name + "/";
-  // Room first: a write that fails half-way can leave the file unreadable, earlier frames included.
+  const std::filesystem::path path = frame_path(frames_.size());
+  const std::string where = path.string() + ":/";
+  // Room first, so that a full disk is one clear message rather than HDF5's failure half-way.
   std::uintmax_t values = 3 * n;
   for (const XdmfField& f : kFields) values += fields_.contains(f.field) ? f.components * n : 0;
-  ensure_room(h5_path_, 8 * values + (frames_.empty() ? 8 * n : 0) + kFileOverhead);
-  // The file is open only while a frame is written: a reader that opens it between writes finds
-  // it complete and consistent (closing writes all metadata).
-  const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
-  Handle file(H5Fopen(h5_path_.c_str(), H5F_ACC_RDWR, access), H5Fclose, "open " + h5_path_.string());
-  {
-    const Handle group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
-                       "create group " + where);
-    write_double_attribute(group, "time", frame.time);
+  ensure_room(path, 8 * values + kFileOverhead);
+  write_file_atomically(path, [&](hid_t file) {
+    write_double_attribute(file, "time", frame.time);
     const std::vector<double> position = xyz(frame.x, frame.y);
-    write_dataset(group, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, position.data(), where);
+    write_dataset(file, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, position.data(), where);
     if (has(Field::velocity)) {
       const std::vector<double> velocity = xyz(frame.vx, frame.vy);
-      write_dataset(group, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, velocity.data(), where);
+      write_dataset(file, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, velocity.data(), where);
     }
     if (has(Field::speed)) {
       std::vector<double> speed(n);
       for (std::size_t i = 0; i < n; ++i) speed[i] = std::hypot(frame.vx[i], frame.vy[i]);
-      hdf5::write_doubles(group, "speed", speed, where);
+      hdf5::write_doubles(file, "speed", speed, where);
     }
     if (has(Field::stress)) {
-      hdf5::write_doubles(group, "sxx", frame.sxx, where);
-      hdf5::write_doubles(group, "syy", frame.syy, where);
-      hdf5::write_doubles(group, "szz", frame.szz, where);
-      hdf5::write_doubles(group, "sxy", frame.sxy, where);
+      hdf5::write_doubles(file, "sxx", frame.sxx, where);
+      hdf5::write_doubles(file, "syy", frame.syy, where);
+      hdf5::write_doubles(file, "szz", frame.szz, where);
+      hdf5::write_doubles(file, "sxy", frame.sxy, where);
     }
-    if (has(Field::p)) hdf5::write_doubles(group, "p", frame.p, where);
-    if (has(Field::q)) hdf5::write_doubles(group, "q", frame.q, where);
-    if (has(Field::plastic_strain)) hdf5::write_doubles(group, "plastic_strain", frame.plastic_strain, where);
-    if (has(Field::density)) hdf5::write_doubles(group, "density", frame.density, where);
+    if (has(Field::p)) hdf5::write_doubles(file, "p", frame.p, where);
+    if (has(Field::q)) hdf5::write_doubles(file, "q", frame.q, where);
+    if (has(Field::plastic_strain)) hdf5::write_doubles(file, "plastic_strain", frame.plastic_strain, where);
+    if (has(Field::density)) hdf5::write_doubles(file, "density", frame.density, where);
     if (has(Field::layer))
-      write_dataset(group, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
-  }
-  const std::string vertices = vertices_name(n);
-  if (H5Lexists(file, vertices.c_str(), H5P_DEFAULT) <= 0) {
+      write_dataset(file, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
+  });
+  const std::filesystem::path vertices = h5_path_.parent_path() / kFrameFolder / (vertices_name(n) + ".h5");
+  if (!std::filesystem::exists(vertices)) {
     std::vector<long long> index(n);
     std::iota(index.begin(), index.end(), 0LL);
-    write_dataset(file, vertices, H5T_STD_I64LE, H5T_NATIVE_LLONG, n, 1, index.data(),
-                  h5_path_.string() + ":/");
+    write_file_atomically(vertices, [&](hid_t file) {
+      write_dataset(file, "vertices", H5T_STD_I64LE, H5T_NATIVE_LLONG, n, 1, index.data(), vertices.string() + ":/");
+    });
   }
-  // Close (and so flush) before indexing the frame: the XDMF never points at data not on disk.
-  file.close("close " + h5_path_.string());
+  // The frame's file is complete on disk before the index and the XDMF point at it.
   frames_.push_back({frame.time, n});
+  write_index();
   write_xdmf();
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 /// @file
-/// Frames of an SPH run written while it runs: DIR/frames.h5 (HDF5, one group per frame) and
-/// DIR/frames.xdmf (the XDMF index ParaView opens as a time series of particle clouds).
-/// The layout is described in docs/sph-output.md.
+/// Frames of an SPH run written while it runs: DIR/frames/frame_NNNNNN.h5 (one HDF5 file per frame),
+/// DIR/frames.h5 (an HDF5 index whose group /frame_NNNNNN is an external link to that file, so that
+/// readers see one file of frames) and DIR/frames.xdmf (the XDMF index ParaView opens as a time
+/// series of particle clouds). The layout is described in docs/sph-output.md.
 #include <cstddef>
 #include <filesystem>
 #include <vector>
@@ -11,16 +12,19 @@
 
 namespace soilsph::sph {
 
-/// Writes DIR/frames.h5 (one group per frame: /frame_000000/{position,velocity,sxx,...} + attribute
-/// time) and DIR/frames.xdmf (a temporal collection of Polyvertex grids ParaView opens).
+/// Writes the frames (reached as /frame_000000/{position,velocity,sxx,...} + attribute time through
+/// DIR/frames.h5) and DIR/frames.xdmf (a temporal collection of Polyvertex grids ParaView opens).
 /// Each frame holds the positions and only the datasets of the selected fields (FieldSet).
-/// The HDF5 file is open only inside write(), which closes it and then atomically replaces the XDMF
-/// index, and the writer takes no HDF5 file lock: a run that crashes keeps every frame written
-/// before, viewers (ParaView, h5py) can read the frames of a running simulation, and a viewer that
-/// keeps the file open does not stop the run.
+/// Every file is written whole to NAME.tmp and renamed into place, the frame before the indexes that
+/// point at it: HDF5 1.10 has no journal, and appending to one file that a kill -9 interrupts can
+/// leave it, earlier frames included, unreadable (measured: 2 of 40 random kills). Now any kill
+/// leaves every file that exists complete. The writer takes no HDF5 file lock: viewers (ParaView,
+/// h5py) can read the frames of a running simulation, and a viewer that keeps a file open does not
+/// stop the run.
 class FrameWriter {
  public:
-  /// Creates DIR if needed and truncates DIR/frames.h5 and DIR/frames.xdmf. Every frame holds the
+  /// Creates DIR if needed, removes DIR/frames/ of an earlier run, and writes empty indexes. Every
+  /// frame holds the
   /// positions and the datasets of `fields` (default: all), and the XDMF index lists only those.
   explicit FrameWriter(const std::filesystem::path& dir, FieldSet fields = FieldSet::all());
   /// Continues the frames of DIR (a resumed run): keeps those up to time `last_kept` and deletes the
@@ -51,6 +55,8 @@ class FrameWriter {
     std::size_t particles;
   };
   void write_xdmf() const;
+  void write_index() const;
+  std::filesystem::path frame_path(std::size_t index) const;
   struct Continuing {};
   FrameWriter(const std::filesystem::path& dir, FieldSet fields, Continuing);
 

@@ -137,10 +137,10 @@ TEST_CASE("kill -9: every file left is readable, and the run resumes from its la
   ChildOptions kill_hard;
   kill_hard.signal_when_exists = dir / "checkpoint.h5";
   kill_hard.signal = SIGKILL;
-  // Frames every 0.25 s: the kill lands between frame writes. A kill inside one (HDF5 has no
-  // journal) can tear frames.h5; docs/sph-output.md, Run records, states how often that was seen.
-  const std::vector<std::string> sparse_frames{"--set", "output.frame_interval=0.25"};
-  const auto killed = run_child(collapse(dir, sparse_frames), dir / "log.txt", kill_hard);
+  // Frames every 40th step: much of the wall time goes into frame writes, so the kill often lands
+  // inside one (the case that could tear a frame file before each file was written whole).
+  const std::vector<std::string> dense_frames{"--set", "output.frame_interval=0.004"};
+  const auto killed = run_child(collapse(dir, dense_frames), dir / "log.txt", kill_hard);
   REQUIRE(killed.signal == SIGKILL);
   CHECK_NOTHROW(read_frames(dir));
   // The record written at the start says the run never finished.
@@ -149,25 +149,27 @@ TEST_CASE("kill -9: every file left is readable, and the run resumes from its la
   INFO(resumed.log);
   REQUIRE(resumed.exit_status == 0);
   const Frames frames = read_frames(dir);
-  CHECK(frames.count == 7);  // t = 0, 0.25, ..., 1.5
-  check_bit_identical(frames, "kill9", sparse_frames);
+  CHECK(frames.count == 376);  // t = 0, 0.004, ..., 1.5: none lost, none twice
+  check_bit_identical(frames, "kill9", dense_frames);
 }
 
 TEST_CASE("a full disk ends the run with one line, and the frames written before stay readable", "[fault][disk]") {
   const fs::path dir = fresh("disk-full");
   ChildOptions small;
-  small.file_size_limit = 600 * 1024;  // frames.h5 reaches it after about 30 of 151 frames
+  // A file-size limit (ulimit -f, per file) that a frame (28 kB) fits in and the first checkpoint
+  // (92 kB, due at t = 0.05 s) does not: the disk is "full" mid-run.
+  small.file_size_limit = 60 * 1024;
   const auto r = run_child(collapse(dir), dir / "log.txt", small);
   INFO(r.log);
   CHECK(r.signal == 0);
   CHECK(r.exit_status == 1);
-  CHECK_THAT(r.log, Contains("error: ") && Contains("frames.h5 would grow past this process's file-size limit"));
+  CHECK_THAT(r.log, Contains("error: ") && Contains("checkpoint.h5.tmp would grow past this process's file-size limit"));
   CHECK(r.log.find("HDF5-DIAG") == std::string::npos);  // HDF5's own error stack stays silent
   const Frames frames = read_frames(dir);
-  CHECK(frames.count > 5);
-  CHECK(frames.count < 151);
+  CHECK(frames.count == 6);  // t = 0 ... 0.05
+  CHECK_FALSE(fs::exists(dir / "checkpoint.h5"));
   CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("file-size limit"));
-  for (const auto& entry : fs::directory_iterator(dir)) CHECK(entry.path().extension() != ".tmp");
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) CHECK(entry.path().extension() != ".tmp");
 }
 
 TEST_CASE("a blow-up stops the run, naming the particle, quantity, step and time", "[fault][blow-up]") {
