@@ -137,6 +137,9 @@ FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields, Cont
 
 FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet fields, double last_kept) {
   FrameWriter writer(dir, fields, Continuing{});
+  std::error_code ignored;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / kFrameFolder, ignored))
+    if (entry.path().extension() == ".tmp") std::filesystem::remove(entry.path(), ignored);  // a killed write
   // The frame files are the record; the index and the XDMF are rebuilt from them, so an index that a
   // kill left one frame behind is repaired here.
   for (std::size_t index = 0;; ++index) {
