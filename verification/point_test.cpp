@@ -76,7 +76,7 @@ void check_meaning(const PointHistory& history, const PointTest& test, std::span
       const std::string where =
           increment < 0 ? "the initial state" : describe_increment(test, leg, increment);
       throw std::runtime_error(where + ": the result has lost meaning: " + why +
-                               " (more increments, or another integrator, may help)");
+                               " (smaller strains, more increments or another integrator may help)");
     }
     if (++increment == legs[leg].increments && leg + 1 < legs.size()) {
       ++leg;
