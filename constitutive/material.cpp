@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <iostream>
 
+#include "constitutive/derived_constants.h"
+
 namespace soilsph {
 
 Material read_material(const TableReader& table) {
@@ -13,6 +15,7 @@ Material read_material(const TableReader& table) {
     if (model == ModifiedCamClay::kName) return ModifiedCamClay(ModifiedCamClay::Params::read(table));
     return LinearElastic(LinearElastic::Params::read(table));
   }();
+  check_derived_constants(material, table);
   // Keys of other models are allowed (one scene can switch models with --set) but said to be unused.
   const auto& known = kMaterialKeys;
   for (const std::string& key : table.unread_keys()) {

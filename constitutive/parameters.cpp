@@ -5,10 +5,25 @@
 
 namespace soilsph {
 
-namespace {
 std::string format_number(double x) {
   std::ostringstream out;
   out << x;
+  std::string text = out.str();
+  const auto e = text.find('e');
+  if (e == std::string::npos) return text;
+  // "1e+07" → "1e7", "1e-07" → "1e-7".
+  std::size_t digits = e + 1;
+  if (text[digits] == '+') text.erase(digits, 1);
+  else if (text[digits] == '-') ++digits;
+  while (digits + 1 < text.size() && text[digits] == '0') text.erase(digits, 1);
+  return text;
+}
+
+namespace {
+/// `text` as a TOML basic string.
+std::string toml_quoted(std::string_view text) {
+  std::ostringstream out;
+  out << toml::value<std::string>(std::string(text));
   return out.str();
 }
 /// "a", "b", "c": the allowed names in messages.
@@ -39,7 +54,13 @@ TableReader::TableReader(const toml::table& table, std::string source, std::stri
     : table_(table), source_(std::move(source)), table_name_(std::move(table_name)) {}
 
 std::string TableReader::where(std::string_view key) const {
-  return source_ + ": [" + table_name_ + "] " + std::string(key);
+  // A value that --set put in the table carries that option as its source (apply_override), so the
+  // message blames the option instead of a file that never held the value.
+  std::string source = source_;
+  if (const toml::node* node = table_.get(key); node && node->source().path &&
+                                                 node->source().path->starts_with(kOverridePrefix))
+    source = *node->source().path;
+  return source + ": [" + table_name_ + "] " + std::string(key);
 }
 
 void TableReader::fail(std::string_view key, std::string_view what) const {
@@ -198,7 +219,7 @@ void apply_override(toml::table& root, std::string_view assignment) {
   if (!table) throw ParameterError("--set " + std::string(assignment) + ": [" + section + "] is not a table");
   toml::table parsed;
   try {
-    parsed = toml::parse("v = " + text);
+    parsed = toml::parse("v = " + text, std::string(kOverridePrefix) + std::string(assignment));
   } catch (const toml::parse_error& e) {
     // An array or inline table must be valid TOML: `[p,q]` is what a shell leaves of ["p","q"].
     if (text.starts_with('[') || text.starts_with('{')) {
@@ -208,9 +229,12 @@ void apply_override(toml::table& root, std::string_view assignment) {
                            "inside single quotes: --set '" +
                            section + "." + key + "=[\"a\",\"b\"]'");
     }
-    parsed.insert_or_assign("v", text);  // a bare word such as modified-cam-clay is a string
+    // A bare word such as modified-cam-clay is a string; it is parsed as one so that it, too,
+    // carries the option as its source.
+    parsed = toml::parse("v = " + toml_quoted(text), std::string(kOverridePrefix) + std::string(assignment));
   }
-  table->insert_or_assign(key, *parsed.get("v"));
+  // Moved, not copied: a copied node loses its source, which messages use to name the option.
+  table->insert_or_assign(key, std::move(*parsed.get("v")));
 }
 
 }  // namespace soilsph

@@ -21,6 +21,10 @@ class ParameterError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A number for messages: six significant digits as `<<` writes them, but 1e12 and 1e-7 rather
+/// than 1e+12 and 1e-07.
+std::string format_number(double x);
+
 /// An interval of admissible values; each end open or closed, or unbounded.
 struct Range {
   double lower = -std::numeric_limits<double>::infinity();
@@ -80,6 +84,8 @@ class TableReader {
   std::vector<std::string> unread_keys() const;
   /// Throws a ParameterError about `key` with `what` as the reason.
   [[noreturn]] void fail(std::string_view key, std::string_view what) const;
+  /// Throws a ParameterError "SOURCE: [table] key = value what".
+  [[noreturn]] void fail_value(std::string_view key, std::string_view value, std::string_view what) const;
 
   const std::string& source() const { return source_; }
   const std::string& table_name() const { return table_name_; }
@@ -89,7 +95,6 @@ class TableReader {
 
  private:
   const toml::node* find(std::string_view key) const;
-  [[noreturn]] void fail_value(std::string_view key, std::string_view value, std::string_view what) const;
   std::string where(std::string_view key) const;
 
   template <class Value>
@@ -107,9 +112,14 @@ class TableReader {
 /// Parses a TOML file, turning syntax errors into ParameterError with file, line and column.
 toml::table parse_toml_file(const std::string& path);
 
+/// The source that apply_override gives the values it sets: "--set " followed by the assignment.
+inline constexpr std::string_view kOverridePrefix = "--set ";
+
 /// Applies one `section.key=value` override (the `--set` option) to `root`. The value is parsed
 /// as a TOML value (number, boolean, quoted or bare string, array); the key must name an existing
 /// table. A value starting with `[` or `{` that is not valid TOML is an error (not a bare string).
+/// The value's source is "--set section.key=value", so TableReader's messages about it name the
+/// option, not the file.
 void apply_override(toml::table& root, std::string_view assignment);
 
 }  // namespace soilsph

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -47,32 +48,80 @@ PointRecord to_record(const PointSample& sample, const State& initial, LoadPath 
   return r;
 }
 
+/// Why `sample` has lost meaning (the bounds of run_point_test), or "" if it has not.
+std::string lost_meaning(const PointSample& sample) {
+  const State& s = sample.state;
+  if (!sample.strain.allFinite() || !s.stress.allFinite() || !std::isfinite(s.pc))
+    return "a value is not finite";
+  const auto beyond = [](std::string_view what, double value, double bound, std::string_view unit) {
+    return std::string(what) + " = " + format_number(value) + std::string(unit) + " is beyond " +
+           format_number(bound) + std::string(unit);
+  };
+  const double stress = s.stress.cwiseAbs().maxCoeff();
+  if (stress > limits::kMaxStress)
+    return beyond("the largest |stress component|", stress, limits::kMaxStress, " Pa");
+  if (s.pc > limits::kMaxStress) return beyond("p_c", s.pc, limits::kMaxStress, " Pa");
+  const double strain = sample.strain.cwiseAbs().maxCoeff();
+  if (strain > point_limits::kMaxResultStrain)
+    return beyond("the largest |strain component|", strain, point_limits::kMaxResultStrain, "");
+  return "";
+}
+
+/// Throws, naming the increment, at the first sample of `history` that has lost meaning.
+void check_meaning(const PointHistory& history, const PointTest& test, std::span<const Leg> legs) {
+  std::size_t leg = 0;
+  int increment = -1;  // sample 0 is the initial state
+  for (const PointSample& sample : history) {
+    if (const std::string why = lost_meaning(sample); !why.empty()) {
+      const std::string where =
+          increment < 0 ? "the initial state" : describe_increment(test, leg, increment);
+      throw std::runtime_error(where + ": the result has lost meaning: " + why +
+                               " (smaller strains, more increments or another integrator may help)");
+    }
+    if (++increment == legs[leg].increments && leg + 1 < legs.size()) {
+      ++leg;
+      increment = 0;
+    }
+  }
+}
+
 }  // namespace
 
 PointCurve run_point_test(const Material& material, const PointTest& test, std::string_view integrator) {
   const std::vector<Leg> legs = build_legs(test);
   const State initial = initial_state(material, test);
   PointHistory history;
-  if (integrator == kReferenceIntegrator) {
-    history = cvode_reference(material, initial, legs);
-  } else {
-    const Material chosen = with_integrator(material, parse_integrator(integrator));
-    history =
-        std::visit([&](const auto& model) { return drive_mixed_control(model, initial, legs); }, chosen);
+  try {
+    if (integrator == kReferenceIntegrator) {
+      history = cvode_reference(material, initial, legs);
+    } else {
+      const Material chosen = with_integrator(material, parse_integrator(integrator));
+      history =
+          std::visit([&](const auto& model) { return drive_mixed_control(model, initial, legs); }, chosen);
+    }
+  } catch (const IncrementError& e) {
+    throw std::runtime_error(describe_increment(test, e.leg, e.increment) + ": " + e.reason);
   }
+  check_meaning(history, test, legs);
   PointCurve curve;
   curve.reserve(history.size());
   for (const PointSample& sample : history) curve.push_back(to_record(sample, initial, test.path));
   return curve;
 }
 
-void write_point_csv(std::ostream& out, const PointCurve& curve) {
+void write_point_csv(std::ostream& out, const PointCurve& curve, std::span<const std::string> comments) {
   // The comment line holds no commas, so CSV readers that take it for a row still see one field.
   out << "# soilsph point: compression-positive; SI (strains 1; stresses Pa); axial = x; radial = mean of y "
          "and z; "
          "eps_q = 2/3 (eps_a - eps_r); q = sqrt(3 J2) signed as sig_a - sig_r; p_c = MCC preconsolidation "
-         "pressure (0 otherwise); u = undrained excess pore pressure (0 otherwise)\n"
-      << "eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u\n";
+         "pressure (0 otherwise); u = undrained excess pore pressure (0 otherwise)\n";
+  for (const std::string& line : comments) {
+    // A line break inside (a quoted argument of the command line) would end the comment early.
+    out << "# ";
+    for (const char c : line) out << (c == '\n' ? "\\n" : c == '\r' ? "\\r" : std::string(1, c));
+    out << '\n';
+  }
+  out << "eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u\n";
   const auto flags = out.flags();
   const auto precision = out.precision();
   out << std::setprecision(std::numeric_limits<double>::max_digits10);

@@ -5,12 +5,39 @@
 /// are compression-positive and SI; internally the driver works tension-positive (tensor.h).
 /// Axes: axial = x (index 0), radial = y and z (indices 1, 2).
 #include <ostream>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "constitutive/material.h"
+#include "constitutive/material_limits.h"
 
 namespace soilsph::verification {
+
+/// Where a test's inputs keep their meaning (README.md, `soilsph point`); run_point_test rejects
+/// anything outside with std::invalid_argument.
+namespace point_limits {
+/// |strain| of a target, a strain-path increment and the strain accumulated along a path: the
+/// models are small-strain, and a volumetric strain of 1 would leave no volume.
+inline constexpr double kMaxStrain = 1.0;
+/// A result whose |strain| exceeds this (ten times any imposed strain) has lost meaning.
+inline constexpr double kMaxResultStrain = 10.0 * kMaxStrain;
+/// Increments per leg: a million take seconds and write a 200 MB CSV; more is a mistake.
+inline constexpr int kMaxIncrements = 1'000'000;
+/// p_initial, Pa: from 1 Pa (the weight of 0.1 mm of soil; below it E·Δε swamps p in round-off, see
+/// limits::kMaxYoungModulus) to limits::kMaxStress.
+inline Range p_initial() {
+  return Range::closed(1.0, limits::kMaxStress);
+}
+/// OCR: p_c0 = OCR · p_initial, and as in the verification case files.
+inline Range ocr() {
+  return Range::closed_open(1.0, 1e6);
+}
+inline Range strain() {
+  return Range::closed(-kMaxStrain, kMaxStrain);
+}
+}  // namespace point_limits
 
 /// The laboratory paths the driver knows (see paths/load_path.h for what each imposes).
 enum class LoadPath { TriaxialDrained, TriaxialUndrained, Oedometer, Isotropic, StrainPath };
@@ -24,6 +51,8 @@ struct PointTest {
                                                ///< (axial for triaxial/oedometer, volumetric for isotropic)
   int increments = 100;                        ///< increments per leg
   std::vector<Mat3> strain_increments;         ///< StrainPath only: tension-positive increments
+  /// StrainPath only, optional: where each increment was read ("FILE:LINE"), to name it in messages.
+  std::vector<std::string> strain_increment_sources;
 };
 
 /// One row per increment including the initial state; compression-positive, SI.
@@ -36,13 +65,16 @@ struct PointRecord {
 using PointCurve = std::vector<PointRecord>;
 
 /// `integrator` is "cvode" (the reference) or any name accepted by parse_integrator().
-/// Throws std::invalid_argument for an invalid test or integrator name, std::runtime_error when an
-/// increment cannot be solved.
+/// Throws std::invalid_argument for an invalid test (outside point_limits) or integrator name, and
+/// std::runtime_error naming the increment (describe_increment()) when one cannot be solved or when
+/// a result has lost meaning: a non-finite value, |stress| or p_c above limits::kMaxStress, or
+/// |strain| above point_limits::kMaxResultStrain.
 PointCurve run_point_test(const Material& material, const PointTest& test, std::string_view integrator);
 
-/// CSV with a '#' header comment line (conventions/units) then the column row
+/// CSV with a '#' header comment line (conventions/units), then `comments` each as a '#' line
+/// (provenance: version, command, material, ...), then the column row
 /// eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u (more columns may follow).
-void write_point_csv(std::ostream& out, const PointCurve& curve);
+void write_point_csv(std::ostream& out, const PointCurve& curve, std::span<const std::string> comments = {});
 
 /// "triaxial-drained", "triaxial-undrained", "oedometer", "isotropic", "strain-path";
 /// throws std::invalid_argument otherwise.

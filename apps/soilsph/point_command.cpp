@@ -1,16 +1,21 @@
 // `soilsph point MATERIAL.toml --test NAME ...`: one material-point test (triaxial, oedometer,
-// isotropic or a strain-path file) written as a compression-positive CSV.
+// isotropic or a strain-path file) written as a compression-positive CSV whose comment header
+// records what produced it.
 #include <fstream>
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
+#include "apps/soilsph/range_validator.h"
+#include "constitutive/material_description.h"
 #include "constitutive/parameters.h"
+#include "soilsph/version.h"
 #include "verification/paths/strain_path_csv.h"
 #include "verification/point_test.h"
 
 namespace soilsph::cli {
 
 namespace {
+namespace limits = verification::point_limits;
 
 struct PointOptions {
   std::string material_path;
@@ -25,49 +30,129 @@ struct PointOptions {
   std::vector<std::string> overrides;
 };
 
+/// The [material] table of the file after the --set overrides, which may only address it.
 Material load_point_material(const PointOptions& o) {
   toml::table root = parse_toml_file(o.material_path);
-  for (const std::string& assignment : o.overrides) apply_override(root, assignment);
+  for (const std::string& assignment : o.overrides) {
+    const std::size_t dot = assignment.find('.');
+    if (dot < assignment.find('=') && assignment.compare(0, dot, "material") != 0)
+      throw ParameterError("--set " + assignment +
+                           ": soilsph point reads only the [material] table (use --set material.KEY=VALUE)");
+    apply_override(root, assignment);
+  }
   const toml::table* table = root["material"].as_table();
   if (!table) throw ParameterError(o.material_path + ": no [material] table");
   return read_material(TableReader(*table, o.material_path, "material"));
 }
 
-void run(const PointOptions& o, bool legs_given) {
+/// --test and --strain-path resolved: `--test strain-path:FILE` is a shorthand for
+/// `--test strain-path --strain-path FILE`. Returns the test's name and the strain-path file.
+std::pair<std::string, std::string> test_and_strain_path(const PointOptions& o) {
+  if (!o.test.starts_with("strain-path:")) return {o.test, o.strain_path};
+  if (!o.strain_path.empty()) throw ParameterError("--strain-path given twice (also in --test)");
+  return {"strain-path", o.test.substr(o.test.find(':') + 1)};
+}
+
+/// The test the options describe; ParameterError naming the option for a misuse.
+verification::PointTest point_test(const PointOptions& o, bool legs_given) {
   using namespace verification;
-  verification::PointTest test;
-  // `--test strain-path:FILE` is accepted as a shorthand for `--test strain-path --strain-path FILE`.
-  std::string name = o.test, strain_path = o.strain_path;
-  if (const auto colon = name.find(':'); colon != std::string::npos && name.starts_with("strain-path:")) {
-    if (!strain_path.empty()) throw std::invalid_argument("--strain-path given twice (also in --test)");
-    strain_path = name.substr(colon + 1);
-    name = "strain-path";
+  PointTest test;
+  const auto [name, strain_path] = test_and_strain_path(o);
+  try {
+    test.path = parse_load_path(name);
+  } catch (const std::invalid_argument& e) {
+    throw ParameterError("--test " + name + ": " + e.what());
   }
-  test.path = parse_load_path(name);
   if (test.path == LoadPath::StrainPath) {
-    if (strain_path.empty()) throw std::invalid_argument("--test strain-path needs --strain-path FILE");
+    if (strain_path.empty()) throw ParameterError("--test strain-path needs --strain-path FILE");
     if (legs_given)
-      throw std::invalid_argument(
+      throw ParameterError(
           "--strain-max and --increments do not apply to --test strain-path (one "
           "increment per row of the file)");
-    test.strain_increments = read_strain_path_file(strain_path);
+    StrainPath rows = read_strain_path_file(strain_path);
+    test.strain_increments = std::move(rows.increments);
+    test.strain_increment_sources = std::move(rows.sources);
   } else if (!strain_path.empty()) {
-    throw std::invalid_argument("--strain-path applies to --test strain-path only");
+    throw ParameterError("--strain-path applies to --test strain-path only");
   }
   test.p_initial = o.p_initial;
   test.ocr = o.ocr;
   test.strain_targets = o.strain_max;
   test.increments = o.increments;
-  const Material material = load_point_material(o);
-  const PointCurve curve = run_point_test(material, test, o.integrator);
+  return test;
+}
+
+/// The integrator that runs: a scheme (which replaces the material's `integrator` key) or cvode.
+void check_integrator(const std::string& name) {
+  std::string allowed;
+  for (std::string_view scheme : kIntegratorNames) {
+    if (name == scheme) return;
+    allowed += std::string(scheme) + ", ";
+  }
+  if (name == verification::kReferenceIntegrator) return;
+  throw ParameterError("--integrator " + name + ": unknown integrator (allowed: " + allowed +
+                       std::string(verification::kReferenceIntegrator) + ")");
+}
+
+/// The comment lines after the conventions line: what produced the curve, enough to run it again.
+std::vector<std::string> provenance(const PointOptions& o, const verification::PointTest& test,
+                                    const Material& material) {
+  using namespace verification;
+  const bool reference = o.integrator == kReferenceIntegrator;
+  const Material used = reference ? material : with_integrator(material, parse_integrator(o.integrator));
+  std::string loading;
+  if (test.path == LoadPath::StrainPath) {
+    loading = "strain path " + test_and_strain_path(o).second + " (" +
+              std::to_string(test.strain_increments.size()) + " rows; one increment each)";
+  } else {
+    loading = std::string(test.path == LoadPath::Isotropic ? "eps_v" : "eps_a") + " targets";
+    for (double target : test.strain_targets) loading += " " + exact_number(target);
+    loading += " (" + std::to_string(test.increments) + " increments each)";
+  }
+  return {
+      std::string("soilsph ") + kVersion,
+      "command: " + invocation(),
+      "material: " + o.material_path + (o.overrides.empty() ? "" : " with --set") + ": " +
+          describe_material(used),
+      "integrator: " + o.integrator +
+          (reference ? " (the CVODE reference; the material's integrator key is not used)" : ""),
+      "test: " + std::string(load_path_name(test.path)) + "; p_initial = " + exact_number(test.p_initial) +
+          " Pa; ocr = " + exact_number(test.ocr) + "; " + loading,
+  };
+}
+
+void write(const PointOptions& o, const verification::PointCurve& curve,
+           const std::vector<std::string>& comments) {
   if (o.out.empty()) {
-    write_point_csv(std::cout, curve);
+    verification::write_point_csv(std::cout, curve, comments);
     return;
   }
   std::ofstream file(o.out);
   if (!file) throw std::runtime_error(o.out + ": cannot open for writing");
-  write_point_csv(file, curve);
+  verification::write_point_csv(file, curve, comments);
+  file.flush();
   if (!file) throw std::runtime_error(o.out + ": write failed");
+}
+
+void run(const PointOptions& o, bool legs_given) {
+  check_integrator(o.integrator);
+  const verification::PointTest test = point_test(o, legs_given);
+  const Material material = load_point_material(o);
+  if (test.ocr != 1.0 && !std::holds_alternative<ModifiedCamClay>(material))
+    throw ParameterError("--ocr " + format_number(test.ocr) + ": OCR applies to modified-cam-clay only (" +
+                         std::string(model_name(material)) + " has no preconsolidation pressure)");
+  verification::PointCurve curve;
+  try {
+    curve = verification::run_point_test(material, test, o.integrator);
+  } catch (const ParameterError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {  // the test's inputs: out of range, a leg of zero length
+    throw ParameterError(e.what());
+  } catch (const std::runtime_error& e) {  // a run that failed or lost meaning, at the named increment
+    throw std::runtime_error(o.material_path + " (" + std::string(model_name(material)) + ", --integrator " +
+                             o.integrator + "): " + e.what());
+  }
+  write(o, curve, provenance(o, test, material));
 }
 
 }  // namespace
@@ -89,21 +174,23 @@ void add_point_command(CLI::App& app) {
   cmd->add_option("--p-initial", o->p_initial,
                   "initial isotropic effective stress, Pa (compression-positive)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--ocr", o->ocr, "overconsolidation ratio, MCC p_c0 = OCR * p_initial (>= 1)")
-      ->capture_default_str();
+      ->check(in_range(limits::p_initial(), "Pa"));
+  cmd->add_option("--ocr", o->ocr, "overconsolidation ratio, MCC p_c0 = OCR * p_initial (MCC only)")
+      ->capture_default_str()
+      ->check(in_range(limits::ocr()));
   auto* strain_max = cmd->add_option("--strain-max", o->strain_max,
                                      "targets of the driven strain, compression-positive, one leg each "
                                      "(axial; volumetric for isotropic), e.g. 0.1,0.05,0.15")
                          ->delimiter(',')
-                         ->capture_default_str();
+                         ->capture_default_str()
+                         ->check(in_range(limits::strain()));
   auto* increments = cmd->add_option("--increments", o->increments, "increments per leg")
                          ->capture_default_str()
-                         ->check(CLI::PositiveNumber);
+                         ->transform(whole_number_in(1, limits::kMaxIncrements));
   std::string integrators;
   for (std::string_view name : kIntegratorNames) integrators += std::string(name) + ", ";
   cmd->add_option("--integrator", o->integrator,
-                  "stress integrator: " + integrators + "or cvode (the reference)")
+                  "stress integrator: " + integrators + "or cvode (the reference); replaces the material's")
       ->capture_default_str();
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,

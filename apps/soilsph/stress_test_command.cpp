@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
+#include "apps/soilsph/range_validator.h"
 #include "constitutive/stress_test.h"
 
 namespace soilsph::cli {
@@ -15,11 +16,11 @@ void add_stress_test_command(CLI::App& app) {
   options->increments = 10'000'000;
   cmd->add_option("--increments", options->increments, "increments per model and integrator")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(whole_number_in(1, 1'000'000'000'000));  // about 1 µs each: beyond it a run takes weeks
   cmd->add_option("--seed", options->seed, "random seed (the walk is reproducible)")->capture_default_str();
   cmd->add_option("--max-increment", options->max_increment, "largest strain-increment norm")
       ->capture_default_str()
-      ->check(CLI::Range(1e-6, 1.0));
+      ->check(in_range(Range::closed(1e-6, 1.0)));
   cmd->callback([options] {
     std::printf(
         "# stress test: %ld increments per model x integrator, seed %llu, |d_eps| log-uniform in [1e-6, "

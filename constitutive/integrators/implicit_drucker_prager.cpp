@@ -7,19 +7,21 @@ namespace soilsph {
 State implicit_update(const DruckerPrager& model, const State& start, const Mat3& strain_increment,
                       Mat6* tangent) {
   const Moduli D = model.elasticity().at(0.0);
-  const Mat3 trial = start.stress + D.stiffness(strain_increment);
+  const double alpha = model.alpha_phi(), sin_psi = model.sin_psi();
+  // The trial's invariants from the start's and the increment's own parts, not from the summed
+  // trial stress: where 2G·Δε dwarfs the stress (stiff soil, low pressure) the sum's components
+  // round the start's I1 away, while I1 + 3K tr Δε keeps it (exactly, on an isochoric path).
+  const Mat3 s_trial = deviator(start.stress) + 2.0 * D.G * deviator(strain_increment);
+  const double sqrt_j2 = std::sqrt(0.5 * ddot(s_trial, s_trial));
+  const double I1 = start.stress.trace() + 3.0 * D.K * strain_increment.trace();
+  const double f_trial = sqrt_j2 + alpha * I1 - model.k_c();  // eq 17
   State next = start;
   next.plastic_multiplier = 0.0;
-  const double f_trial = model.yield(trial);
   if (f_trial <= 0.0) {
-    next.stress = trial;
+    next.stress = start.stress + D.stiffness(strain_increment);
     if (tangent) *tangent = voigt_isotropic_stiffness(D.K, D.G);
     return next;
   }
-  const double alpha = model.alpha_phi(), sin_psi = model.sin_psi();
-  const Mat3 s_trial = deviator(trial);
-  const double sqrt_j2 = std::sqrt(0.5 * ddot(s_trial, s_trial));
-  const double I1 = trial.trace();
   const double A = D.G + 27.0 * alpha * D.K * sin_psi;  // n_f : D : n_g (denominator of eq 22)
   const double d_lambda = f_trial / A;
 

@@ -138,7 +138,16 @@ State finish_implicitly(const Model& model, const State& start, const Mat3& sigm
   mid.stress = sigma;
   mid.pc = pc;
   accumulate_plastic_strain(mid, plastic_strain);
-  State next = implicit_update(model, mid, remaining);
+  State next;
+  try {
+    next = implicit_update(model, mid, remaining);
+  } catch (const IntegrationError& e) {
+    // Said as substep's failure: the user chose substep, and the implicit return is its fallback.
+    throw IntegrationError(
+        "substep: the error control did not converge, and its fallback for the rest of the "
+        "increment failed: " +
+        std::string(e.what()));
+  }
   next.plastic_multiplier = std::max(next.plastic_multiplier + multiplier, 0.0);
   return next;
 }

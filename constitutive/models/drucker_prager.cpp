@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "constitutive/integrators/integrate.h"
+#include "constitutive/material_limits.h"
 #include "constitutive/tangent.h"
 
 namespace soilsph {
@@ -16,10 +17,10 @@ constexpr double kApexSqrtJ2 = 1e-12;
 DruckerPragerParams DruckerPragerParams::read(const TableReader& t) {
   DruckerPragerParams p{};
   p.density = t.number("density", Range::positive(), "kg/m^3");
-  p.young_modulus = t.number("young_modulus", Range::positive(), "Pa");
+  p.young_modulus = t.number("young_modulus", limits::young_modulus_range(), "Pa");
   p.poisson_ratio = t.number("poisson_ratio", Range::open(-1.0, 0.5));
   p.friction_angle = t.number("friction_angle", Range::open(0.0, 90.0), "degrees");
-  p.cohesion = t.number_or("cohesion", 0.0, Range::non_negative(), "Pa");
+  p.cohesion = t.number_or("cohesion", 0.0, Range::closed(0.0, limits::kMaxStress), "Pa");
   p.dilatancy_angle = t.number_or("dilatancy_angle", 0.0, Range::closed(0.0, p.friction_angle), "degrees");
   p.integrator = read_integrator(t, kDefaultIntegrator);
   p.substep_tolerance = read_substep_tolerance(t);

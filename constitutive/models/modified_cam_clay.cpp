@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "constitutive/integrators/integrate.h"
+#include "constitutive/material_limits.h"
 #include "constitutive/tangent.h"
 
 namespace soilsph {
@@ -19,9 +20,9 @@ ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
       t.choice_or("elasticity", "pressure-dependent", {"constant", "pressure-dependent"});
   p.elasticity = kind == "constant" ? Elasticity::Kind::Constant : Elasticity::Kind::PressureDependent;
   if (p.elasticity == Elasticity::Kind::Constant) {
-    p.young_modulus = t.number("young_modulus", Range::positive(), "Pa");
+    p.young_modulus = t.number("young_modulus", limits::young_modulus_range(), "Pa");
   } else {
-    p.elastic_pressure_floor = t.number_or("elastic_pressure_floor", 1.0e3, Range::positive(), "Pa");
+    p.elastic_pressure_floor = t.number_or("elastic_pressure_floor", 1.0e3, limits::stress_range(), "Pa");
   }
   p.integrator = read_integrator(t, kDefaultIntegrator);
   p.substep_tolerance = read_substep_tolerance(t);

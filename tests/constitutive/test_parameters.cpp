@@ -4,6 +4,7 @@
 #include <array>
 #include <fstream>
 
+#include "constitutive/material_description.h"
 #include "helpers.h"
 
 using namespace soilsph;
@@ -57,13 +58,19 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
   };
   const std::vector<Case> cases = {
       {replace(kDruckerPrager, "young_modulus = 1.0e6", "young_modulus = -5.0"),
-       "case.toml: [material] young_modulus = -5 is out of range (allowed: 0 < value Pa)"},
+       "case.toml: [material] young_modulus = -5 is out of range (allowed: 0 < value <= 1e12 Pa)"},
+      {replace(kDruckerPrager, "young_modulus = 1.0e6", "young_modulus = 1e24"),
+       "[material] young_modulus = 1e24 is out of range (allowed: 0 < value <= 1e12 Pa)"},
       {replace(kDruckerPrager, "poisson_ratio = 0.3", "poisson_ratio = 0.5"),
        "[material] poisson_ratio = 0.5 is out of range (allowed: -1 < value < 0.5)"},
       {replace(kDruckerPrager, "friction_angle = 35.0", "friction_angle = 90"),
        "[material] friction_angle = 90 is out of range (allowed: 0 < value < 90 degrees)"},
       {replace(kDruckerPrager, "cohesion = 0.0", "cohesion = -1.0"),
-       "[material] cohesion = -1 is out of range (allowed: 0 <= value Pa)"},
+       "[material] cohesion = -1 is out of range (allowed: 0 <= value <= 1e12 Pa)"},
+      {replace(kDruckerPrager, "cohesion = 0.0", "cohesion = 1e308"),
+       "[material] cohesion = 1e308 is out of range (allowed: 0 <= value <= 1e12 Pa)"},
+      {kCamClay + "elastic_pressure_floor = 1e13\n",
+       "[material] elastic_pressure_floor = 1e13 is out of range (allowed: 0 < value <= 1e12 Pa)"},
       {replace(kDruckerPrager, "dilatancy_angle = 0.0", "dilatancy_angle = 40.0"),
        "[material] dilatancy_angle = 40 is out of range (allowed: 0 <= value <= 35 degrees)"},
       {replace(kDruckerPrager, "density = 2000.0", "density = 0.0"),
@@ -81,13 +88,55 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
       {kDruckerPrager + "integrator = \"rk4\"\n", "[material] integrator = \"rk4\" is not allowed"},
       {kCamClay + "elasticity = \"nonlinear\"\n", "[material] elasticity = \"nonlinear\" is not allowed"},
       {kCamClay + "elasticity = \"constant\"\n", "[material] young_modulus: is missing"},
-      {kDruckerPrager + "frictoin_angle = 30.0\n", "case.toml: [material] frictoin_angle: is not a known key"},
+      {kDruckerPrager + "frictoin_angle = 30.0\n",
+       "case.toml: [material] frictoin_angle: is not a known key"},
   };
   for (const Case& c : cases) {
     INFO(c.text);
     CHECK_THROWS_WITH(from_text(c.text), Contains(c.message));
     CHECK_THROWS_AS(from_text(c.text), ParameterError);
   }
+}
+
+// Keys within their ranges that combine into a derived constant that is infinite or zero. Each
+// expected value is what IEEE arithmetic makes of the formula: G = 5e-324/2.6 rounds to 0, 1 + 1e308
+// over λ − κ = 0.066 overflows, sin and tan of 5e-324 degrees (9e-326 rad) are 0.
+TEST_CASE("derived constants that are not finite and positive are rejected, naming the key", "[parameters]") {
+  struct Case {
+    std::string text, message;
+  };
+  const std::string constant_mcc = kCamClay + "elasticity = \"constant\"\nyoung_modulus = 1e6\n";
+  const std::vector<Case> cases = {
+      {replace(kDruckerPrager, "young_modulus = 1.0e6", "young_modulus = 5e-324"),
+       "case.toml: [material] young_modulus = 4.94066e-324 gives G = E/(2(1+nu)) = 0 Pa, which must be "
+       "finite and > 0"},
+      {replace(constant_mcc, "young_modulus = 1e6", "young_modulus = 5e-324"),
+       "[material] young_modulus = 4.94066e-324 gives G = E/(2(1+nu)) = 0 Pa"},
+      {replace(kDruckerPrager, "friction_angle = 35.0", "friction_angle = 5e-324"),
+       "[material] friction_angle = 4.94066e-324 gives alpha_phi = tan(phi)/sqrt(9 + 12 tan^2(phi)) (eq 19) "
+       "= "
+       "0, which must be finite and > 0"},
+      // φ = 1e-300 degrees: α_φ = 5.8e-303 > 0, but the apex 3c/tan φ = 3e7 Pa / 1.7e-302 overflows.
+      {replace(replace(kDruckerPrager, "friction_angle = 35.0", "friction_angle = 1e-300"), "cohesion = 0.0",
+               "cohesion = 1e7"),
+       "[material] cohesion = 1e7 gives the apex's I1 = 3c/tan(phi) = inf Pa, which must be finite and >= 0"},
+      {replace(kCamClay, "initial_void_ratio = 0.68", "initial_void_ratio = 1e308"),
+       "[material] initial_void_ratio = 1e308 gives (1+e0)/(lambda-kappa) (eq 27) = inf, which must be "
+       "finite"},
+      {replace(kCamClay, "friction_angle = 35.0", "friction_angle = 5e-324"),
+       "[material] friction_angle = 4.94066e-324 gives M = 6 sin(phi)/(3 - sin(phi)) (eq 26) = 0"},
+      // κ/(1+e0) = 1e-310/1.68 is subnormal, so K at the 1 kPa floor is 1e3/6e-311 = inf.
+      {replace(kCamClay, "swelling_index = 0.019", "swelling_index = 1e-310"),
+       "[material] elastic_pressure_floor = 1000 gives K = p_floor (1+e0)/kappa = inf Pa"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.text);
+    CHECK_THROWS_WITH(from_text(c.text), Contains(c.message));
+    CHECK_THROWS_AS(from_text(c.text), ParameterError);
+  }
+  // The largest values of each range still give usable constants.
+  CHECK_NOTHROW(from_text(replace(replace(kDruckerPrager, "young_modulus = 1.0e6", "young_modulus = 1e12"),
+                                  "cohesion = 0.0", "cohesion = 1e12")));
 }
 
 TEST_CASE("overrides given with --set parse TOML values and bare words", "[parameters]") {
@@ -100,6 +149,31 @@ TEST_CASE("overrides given with --set parse TOML values and bare words", "[param
   CHECK(root["scene"]["gravity"].value<double>() == 9.81);
   CHECK_THROWS_AS(apply_override(root, "nodot=3"), ParameterError);
   CHECK_THROWS_AS(apply_override(root, "material.model"), ParameterError);
+}
+
+TEST_CASE("a bad value given with --set is blamed on the option, not on the file", "[parameters]") {
+  const auto read = [](const std::string& assignment) {
+    toml::table root = toml::parse(kDruckerPrager, std::string("case.toml"));
+    apply_override(root, assignment);
+    return read_material(TableReader(*root["material"].as_table(), "case.toml", "material"));
+  };
+  CHECK_THROWS_WITH(
+      read("material.young_modulus=-5"),
+      Contains("--set material.young_modulus=-5: [material] young_modulus = -5 is out of range") &&
+          !Contains("case.toml"));
+  CHECK_THROWS_WITH(
+      read("material.model=cam-clay"),
+      Contains("--set material.model=cam-clay: [material] model = \"cam-clay\" is not allowed"));
+  CHECK_THROWS_WITH(
+      read("material.frictoin_angle=30"),
+      Contains("--set material.frictoin_angle=30: [material] frictoin_angle: is not a known key"));
+  // A value the file holds is still blamed on the file when another key was overridden.
+  CHECK_THROWS_WITH(read("material.poisson_ratio=0.7"), Contains("--set material.poisson_ratio=0.7"));
+  toml::table root =
+      toml::parse(replace(kDruckerPrager, "density = 2000.0", "density = 0.0"), std::string("case.toml"));
+  apply_override(root, "material.friction_angle=30");
+  CHECK_THROWS_WITH(read_material(TableReader(*root["material"].as_table(), "case.toml", "material")),
+                    Contains("case.toml: [material] density = 0 is out of range"));
 }
 
 TEST_CASE("TOML syntax errors name the file and line", "[parameters]") {
@@ -146,4 +220,38 @@ TEST_CASE("an override (--set) may be a TOML array", "[parameters]") {
   CHECK_THROWS_WITH(apply_override(root, "output.fields=[p,q]"),
                     Contains("--set output.fields=[p,q]: not a TOML value") &&
                         Contains(R"(--set 'output.fields=["a","b"]')"));
+}
+
+// What a result records of its material reads back to the same model: every key present (each
+// optional one set off its default, so a missing key would read back as the default) and exact.
+TEST_CASE("a described material reads back to the same parameters", "[parameters]") {
+  const auto read_back = [](const Material& material) {
+    std::string table = "[material]\n" + describe_material(material);
+    for (std::size_t at; (at = table.find("; ")) != std::string::npos;) table.replace(at, 2, "\n");
+    return from_text(table);
+  };
+  const Material dp = from_text(replace(replace(kDruckerPrager, "cohesion = 0.0", "cohesion = 1234.5678"),
+                                        "dilatancy_angle = 0.0", "dilatancy_angle = 0.1") +
+                                "integrator = \"substep\"\nsubstep_tolerance = 3e-7\n");
+  const auto& a = std::get<DruckerPrager>(dp).params();
+  const auto& b = std::get<DruckerPrager>(read_back(dp)).params();
+  CHECK(std::tie(a.density, a.young_modulus, a.poisson_ratio, a.friction_angle, a.cohesion, a.dilatancy_angle,
+                 a.integrator, a.substep_tolerance) ==
+        std::tie(b.density, b.young_modulus, b.poisson_ratio, b.friction_angle, b.cohesion, b.dilatancy_angle,
+                 b.integrator, b.substep_tolerance));
+  const Material mcc = from_text(kCamClay + "elastic_pressure_floor = 1.0e-1\nintegrator = \"explicit\"\n" +
+                                 "substep_tolerance = 1e-9\nimplicit_alpha = 0.75\n");
+  const auto& c = std::get<ModifiedCamClay>(mcc).params();
+  const auto& d = std::get<ModifiedCamClay>(read_back(mcc)).params();
+  CHECK(std::tie(c.density, c.poisson_ratio, c.friction_angle, c.compression_index, c.swelling_index,
+                 c.initial_void_ratio, c.elasticity, c.elastic_pressure_floor, c.integrator,
+                 c.substep_tolerance, c.implicit_alpha) ==
+        std::tie(d.density, d.poisson_ratio, d.friction_angle, d.compression_index, d.swelling_index,
+                 d.initial_void_ratio, d.elasticity, d.elastic_pressure_floor, d.integrator,
+                 d.substep_tolerance, d.implicit_alpha));
+  const Material elastic = from_text(
+      "[material]\nmodel = \"linear-elastic\"\ndensity = 1.5e3\n"
+      "young_modulus = 0.1\npoisson_ratio = -0.2\n");
+  CHECK(describe_material(read_back(elastic)) ==
+        "model = \"linear-elastic\"; density = 1500; young_modulus = 0.1; poisson_ratio = -0.2");
 }

@@ -76,6 +76,24 @@ TEST_CASE("Drucker-Prager correction: apex for tension, radial scaling of the de
   }
 }
 
+// ψ = 0 and tr Δε = 0: neither the elastic nor the plastic strain changes the volume, so p stays
+// exactly p_n however stiff the soil. At E = 1e12 Pa, 2GΔε = 7.7e10 Pa against p = 1 mPa: summed
+// into the trial's components first, p was off by 0.2 %.
+TEST_CASE("Drucker-Prager implicit return keeps p on an isochoric increment when E*strain dwarfs p",
+          "[plastic]") {
+  DruckerPrager::Params params = test::table1_drucker_prager_params();
+  params.young_modulus = 1e12;
+  params.integrator = Integrator::Implicit;
+  const DruckerPrager model(params);
+  State start;
+  start.stress = isotropic_stress(1e-3);
+  Mat3 d_eps = Mat3::Zero();
+  d_eps.diagonal() << -0.1, 0.05, 0.05;
+  const State next = model.update(start, d_eps, Mat3::Zero());
+  CHECK(mean_pressure(next.stress) == Approx(1e-3).epsilon(1e-12));
+  CHECK(model.yield(next.stress) == Approx(0.0).margin(1e-12 * 1e-3));  // on the cone
+}
+
 TEST_CASE("MCC correction moves (p, q) towards the ellipse centre onto the surface (eq 34-35)", "[plastic]") {
   const ModifiedCamClay mcc(test::table1_cam_clay(Elasticity::Kind::Constant));
   std::mt19937_64 rng(5);

@@ -51,9 +51,10 @@ TEST_CASE("[output] fields selects the frame datasets: default all, --set, valid
                                 R"("density", "layer"))");
   CHECK_THROWS_WITH(
       test::shipped_scene("collapse-dp", {R"(output.fields=["p","sxx"])"}),
-      Contains("collapse-dp.toml: [output] fields") && Contains(R"("sxx" is not allowed)") && allowed);
+      Contains(R"(--set output.fields=["p","sxx"]: [output] fields)") && Contains(R"("sxx" is not allowed)") &&
+          allowed);
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {R"(output.fields="p")"}),
-                    Contains("collapse-dp.toml: [output] fields: must be an array") && allowed);
+                    Contains(R"(--set output.fields="p": [output] fields: must be an array)") && allowed);
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"output.fields=3"}),
                     Contains("[output] fields: must be an array") && allowed);
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"output.fields=[1]"}),

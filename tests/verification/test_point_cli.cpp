@@ -7,6 +7,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#include "constitutive/material.h"
+#include "soilsph/version.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -14,11 +18,15 @@ namespace fs = std::filesystem;
 const std::string kExe = SOILSPH_EXECUTABLE;
 const std::string kSource = SOILSPH_SOURCE_DIR;
 
-/// Runs `soilsph point ARGS` with stderr to `log`; returns the exit status.
-int point(const std::string& args, const fs::path& log) {
-  const std::string command = kExe + " point " + args + " > /dev/null 2> " + log.string();
+/// Runs `soilsph ARGS` with stderr to `log`; returns the exit status.
+int run_soilsph(const std::string& args, const fs::path& log) {
+  const std::string command = kExe + " " + args + " > /dev/null 2> " + log.string();
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+/// Runs `soilsph point ARGS` with stderr to `log`; returns the exit status.
+int point(const std::string& args, const fs::path& log) {
+  return run_soilsph("point " + args, log);
 }
 
 std::string read(const fs::path& path) {
@@ -49,7 +57,8 @@ TEST_CASE("soilsph point writes the contract CSV", "[cli]") {
   CHECK(line.rfind("# ", 0) == 0);
   CHECK(line.find("compression-positive") != std::string::npos);
   CHECK(line.find(',') == std::string::npos);  // a comment line that CSV readers do not split
-  REQUIRE(std::getline(csv, line));
+  while (std::getline(csv, line) && line.starts_with("# ")) {
+  }
   CHECK(line.rfind("eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u", 0) == 0);
   int rows = 0;
   while (std::getline(csv, line)) {
@@ -70,9 +79,9 @@ TEST_CASE("soilsph point runs a strain-path file and the cvode reference", "[cli
   CHECK(point(material + " --test strain-path:" + path.string() + " --out " + (dir.path / "b.csv").string(),
               dir.path / "log") == 0);
   std::istringstream csv(read(dir.path / "b.csv"));
-  int lines = 0;
-  for (std::string line; std::getline(csv, line);) ++lines;
-  CHECK(lines == 2 + 3);
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) rows += !line.starts_with("#");
+  CHECK(rows == 1 + 3);  // the column header, the initial state and one row per increment
 }
 
 TEST_CASE("soilsph point rejects invalid options and files with a message", "[cli]") {
@@ -102,7 +111,159 @@ TEST_CASE("soilsph point rejects invalid options and files with a message", "[cl
   };
   for (const Case& c : cases) {
     INFO(c.args);
-    CHECK(point(c.args, log) != 0);
+    const int status = point(c.args, log);
+    // Input errors exit 2; an output file that cannot be opened is a failed run, 1.
+    CHECK(status == (c.message == "/nonexistent/dir/out.csv" ? 1 : 2));
     CHECK(read(log).find(c.message) != std::string::npos);
   }
+}
+
+TEST_CASE("soilsph point states the allowed range of each option in plain numbers (exit 2)", "[cli]") {
+  TempDir dir;
+  const fs::path log = dir.path / "log";
+  const std::string mcc = kSource + "/data/materials/mcc-table1.toml";
+  const std::string dp = kSource + "/data/materials/dp-table1.toml";
+  const fs::path steep = dir.path / "steep.csv";
+  std::ofstream(steep) << "d_xx,d_yy,d_zz,d_xy,d_yz,d_xz\n0.5,0,0,0,0,0\n-10,0,0,0,0,0\n";
+  const fs::path drift = dir.path / "drift.csv";
+  std::ofstream(drift) << "d_xx,d_yy,d_zz,d_xy,d_yz,d_xz\n0,0,0,0.6,0,0\n# twice\n0,0,0,0.6,0,0\n";
+  struct Case {
+    std::string args, message;
+  };
+  const Case cases[] = {
+      {mcc + " --test isotropic --p-initial 0",
+       "--p-initial: 0 is out of range (allowed: 1 <= value <= 1e12 Pa)"},
+      {mcc + " --test isotropic --p-initial 1e300", "--p-initial: 1e300 is out of range"},
+      {mcc + " --test isotropic --ocr 0.5", "--ocr: 0.5 is out of range (allowed: 1 <= value < 1e6)"},
+      {mcc + " --test isotropic --strain-max 1e6",
+       "--strain-max: 1e6 is out of range (allowed: -1 <= value <= 1)"},
+      {mcc + " --test isotropic --strain-max 0.1,-2", "--strain-max: -2 is out of range"},
+      {mcc + " --test isotropic --increments 2.5",
+       "--increments: 2.5 is not a whole number (allowed: 1 <= value <= 1e6)"},
+      {mcc + " --test isotropic --increments 1e7",
+       "--increments: 1e7 is out of range (allowed: 1 <= value <= 1e6)"},
+      {mcc + " --test strain-path:" + steep.string(),
+       "steep.csv:3: d_xx = -10 is out of range (allowed: -1 <= value <= 1)"},
+      {mcc + " --test strain-path:" + drift.string(),
+       "drift.csv:4: eps_xy accumulated up to this row = 1.2 is out of range (allowed: -1 <= value <= 1)"},
+      {mcc + " --test isotropic --set foo.bar=1",
+       "--set foo.bar=1: soilsph point reads only the [material] table"},
+      {mcc + " --test isotropic --set material.young_modulus=-5",
+       "--set material.young_modulus=-5: [material] young_modulus = -5 is out of range (allowed: 0 < value "
+       "<= 1e12 Pa)"},
+      {dp + " --test isotropic --ocr 2", "--ocr 2: OCR applies to modified-cam-clay only"},
+      {mcc + " --test triaxial-drained --integrator rk4", "--integrator rk4: unknown integrator"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.args);
+    CHECK(point(c.args, log) == 2);
+    const std::string message = read(log);
+    CHECK(message.find(c.message) != std::string::npos);
+    CHECK(std::count(message.begin(), message.end(), '\n') <= 2);  // CLI11 adds "Run with --help"
+  }
+  // OCR 1 is every model's state; the increments may be written as 1e1.
+  CHECK(point(dp + " --test isotropic --ocr 1 --increments 1e1", log) == 0);
+}
+
+// Runs that fail or lose meaning exit 1, naming the material, the integrator that ran and the
+// increment in the user's terms. The expected increments follow from the MCC normal compression line
+// with pressure-dependent elasticity, which the implicit return follows exactly on an isotropic path:
+// p = p0 exp(eps_v (1+e0)/lambda) passes 1e12 Pa from p0 = 100 kPa at
+// eps_v = 0.085/1.68 ln(1e7) = 0.8155, i.e. in increment 9 of 10 to eps_v = 1, and in the third row
+// of a path adding eps_v = 0.3 per row.
+TEST_CASE("soilsph point names the increment, row and integrator of a run that fails (exit 1)", "[cli]") {
+  TempDir dir;
+  const fs::path log = dir.path / "log";
+  const std::string mcc =
+      kSource + "/data/materials/mcc-table1.toml --set material.elasticity=pressure-dependent";
+  CHECK(point(mcc + " --test isotropic --strain-max 1 --increments 10", log) == 1);
+  CHECK(
+      read(log).find("mcc-table1.toml (modified-cam-clay, --integrator implicit): increment 9 of 10 of leg 1 "
+                     "(eps_v from 0 to 1): the result has lost meaning: ") != std::string::npos);
+  const fs::path path = dir.path / "compress.csv";
+  std::ofstream(path) << "d_xx,d_yy,d_zz,d_xy,d_yz,d_xz\n# 0.3 in eps_v per row\n"
+                      << "-0.1,-0.1,-0.1,0,0,0\n-0.1,-0.1,-0.1,0,0,0\n-0.1,-0.1,-0.1,0,0,0\n";
+  CHECK(point(mcc + " --test strain-path:" + path.string(), log) == 1);
+  CHECK(read(log).find("compress.csv:5: the result has lost meaning: ") != std::string::npos);
+  // A 100 % extension in one increment at E = 1e12 Pa: substep's error control gives up and its
+  // implicit fallback does not converge either; the message is substep's, not the fallback's.
+  const std::string stiff = kSource + "/data/materials/mcc-table1.toml --set material.young_modulus=1e12";
+  CHECK(point(stiff + " --test oedometer --strain-max -1 --increments 1 --integrator substep", log) == 1);
+  const std::string message = read(log);
+  CHECK(message.find(
+            "(modified-cam-clay, --integrator substep): increment 1 of 1 of leg 1 (eps_a from 0 to -1): "
+            "substep: ") != std::string::npos);
+  CHECK(std::count(message.begin(), message.end(), '\n') == 1);
+}
+
+TEST_CASE("soilsph material gives one line for a derived constant that overflows (exit 2)", "[cli]") {
+  TempDir dir;
+  const fs::path material = dir.path / "loose.toml";
+  std::ofstream(material)
+      << "[material]\nmodel = \"modified-cam-clay\"\ndensity = 2000.0\npoisson_ratio = 0.3\n"
+         "friction_angle = 35.0\ncompression_index = 0.085\nswelling_index = 0.019\n"
+         "initial_void_ratio = 1e308\n";
+  const fs::path log = dir.path / "log";
+  CHECK(run_soilsph("material " + material.string(), log) == 2);
+  const std::string message = read(log);
+  CHECK(message.find(
+            "loose.toml: [material] initial_void_ratio = 1e308 gives (1+e0)/(lambda-kappa) (eq 27) = inf") !=
+        std::string::npos);
+  CHECK(std::count(message.begin(), message.end(), '\n') == 1);
+}
+
+// The header names everything needed to run the curve again; the material line is TOML that reads
+// back to the material the run used (the file after --set, the integrator that ran, defaults filled).
+TEST_CASE("soilsph point records version, command, material, integrator and test in its header", "[cli]") {
+  TempDir dir;
+  const fs::path out = dir.path / "curve.csv";
+  const std::string material = kSource + "/data/materials/mcc-table1.toml";
+  const std::string args =
+      material + " --test triaxial-drained --p-initial 50e3 --ocr 2 --strain-max 0.02,0.01 " +
+      "--increments 5 --integrator substep --set material.friction_angle=30 --out " + out.string();
+  REQUIRE(point(args, dir.path / "log") == 0);
+  std::istringstream csv(read(out));
+  std::vector<std::string> comments;
+  for (std::string line; std::getline(csv, line) && line.starts_with("# ");)
+    comments.push_back(line.substr(2));
+  REQUIRE(comments.size() == 6);
+  CHECK(comments[1] == std::string("soilsph ") + soilsph::kVersion);
+  CHECK(comments[2] == "command: soilsph point " + args);
+  CHECK(comments[4] == "integrator: substep");
+  CHECK(comments[5] ==
+        "test: triaxial-drained; p_initial = 50000 Pa; ocr = 2; eps_a targets 0.02 0.01 (5 increments each)");
+  const std::string prefix = "material: " + material + " with --set: ";
+  REQUIRE(comments[3].starts_with(prefix));
+  std::string table = "[material]\n" + comments[3].substr(prefix.size());
+  for (std::size_t at; (at = table.find("; ")) != std::string::npos;) table.replace(at, 2, "\n");
+  const toml::table root = toml::parse(table);
+  const soilsph::Material recorded =
+      soilsph::read_material(soilsph::TableReader(*root["material"].as_table(), "header", "material"));
+  soilsph::ModifiedCamClay::Params expected =
+      std::get<soilsph::ModifiedCamClay>(soilsph::load_material(material)).params();
+  expected.friction_angle = 30.0;
+  expected.integrator = soilsph::Integrator::Substep;
+  const auto& got = std::get<soilsph::ModifiedCamClay>(recorded).params();
+  CHECK(got.friction_angle == expected.friction_angle);
+  CHECK(got.integrator == expected.integrator);
+  CHECK(got.young_modulus == expected.young_modulus);
+  CHECK(got.elasticity == expected.elasticity);
+  CHECK(got.compression_index == expected.compression_index);
+  CHECK(got.swelling_index == expected.swelling_index);
+  CHECK(got.initial_void_ratio == expected.initial_void_ratio);
+  CHECK(got.poisson_ratio == expected.poisson_ratio);
+  CHECK(got.density == expected.density);
+  CHECK(got.substep_tolerance == expected.substep_tolerance);
+  CHECK(got.implicit_alpha == expected.implicit_alpha);
+
+  // A strain path is named with its row count.
+  const fs::path path = dir.path / "path.csv";
+  std::ofstream(path) << "d_xx,d_yy,d_zz,d_xy,d_yz,d_xz\n-1e-3,5e-4,5e-4,0,0,0\n-1e-3,5e-4,5e-4,0,0,0\n";
+  REQUIRE(
+      point(material + " --test strain-path:" + path.string() + " --integrator cvode --out " + out.string(),
+            dir.path / "log") == 0);
+  const std::string header = read(out);
+  CHECK(header.find("\n# test: strain-path; p_initial = 100000 Pa; ocr = 1; strain path " + path.string() +
+                    " (2 rows; one increment each)\n") != std::string::npos);
+  CHECK(header.find("\n# integrator: cvode (the CVODE reference") != std::string::npos);
 }

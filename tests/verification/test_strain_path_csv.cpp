@@ -12,7 +12,7 @@ using namespace soilsph::verification;
 namespace {
 std::vector<Mat3> parse(const std::string& text) {
   std::istringstream in(text);
-  return read_strain_path(in, "path.csv");
+  return read_strain_path(in, "path.csv").increments;
 }
 }  // namespace
 

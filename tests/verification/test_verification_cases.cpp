@@ -47,6 +47,9 @@ TEST_CASE("an invalid case names the file, the case and the key", "[cases]") {
   CHECK_THAT(unknown, Catch::Contains("soilsph-case-under-test.toml") && Catch::Contains("case[0]") &&
                           Catch::Contains("colour"));
   CHECK_THAT(error_of(good + "ocr = 0.5\n"), Catch::Contains("ocr"));
+  // The ranges of `soilsph point` (point_limits), so a case never fails at run time on its inputs.
+  CHECK_THAT(error_of(good + "p_initial = 0.5\n"),
+             Catch::Contains("p_initial = 0.5 is out of range (allowed: 1 <= value <= 1e12 Pa)"));
   CHECK_THAT(error_of(good + "closed_form = \"mcc-triaxial-drained\"\n"), Catch::Contains("closed_form"));
   CHECK_THAT(error_of("path = \"oedometer\"\nstrain_targets = [0.1]\ntolerance = { rk4 = 1e-3 }\n"),
              Catch::Contains("rk4") && Catch::Contains("cvode"));

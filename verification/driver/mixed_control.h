@@ -136,7 +136,8 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
                            (update_error.empty() ? "" : "; the update failed: " + update_error));
 }
 
-/// Runs every leg from `initial`: one sample per increment, the initial state first. The imposed
+/// Runs every leg from `initial`: one sample per increment, the initial state first; a failed
+/// increment throws IncrementError. The imposed
 /// stresses are accumulated as targets (not added to the last solved stress), so the residuals
 /// left by each Newton solve do not drift.
 template <class Model>
@@ -160,8 +161,7 @@ PointHistory drive_mixed_control(const Model& model, const State& initial, std::
         State next = mixed_control_increment(model, last.state, legs[l], target, strain_increment, options);
         history.push_back({last.strain + strain_from_voigt(strain_increment), next});
       } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string(e.what()) + " in increment " + std::to_string(k + 1) +
-                                 " of leg " + std::to_string(l + 1));
+        throw IncrementError(e.what(), l, k);
       }
     }
   }

@@ -2,6 +2,9 @@
 /// @file
 /// What a material-point run produces: the total strain and the model state after each increment,
 /// the initial state first. Shared by the mixed-control driver and the CVODE reference.
+#include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "constitutive/state.h"
@@ -14,5 +17,21 @@ struct PointSample {
   State state;
 };
 using PointHistory = std::vector<PointSample>;
+
+/// A run that could not complete one increment: which one (`leg` and `increment` count from 0) and
+/// why, so that callers can name it in their own terms (a strain-path file's row, a strain target).
+/// what() is the reason followed by " in increment k of leg l" (counting from 1).
+class IncrementError : public std::runtime_error {
+ public:
+  IncrementError(const std::string& reason, std::size_t leg, int increment)
+      : std::runtime_error(reason + " in increment " + std::to_string(increment + 1) + " of leg " +
+                           std::to_string(leg + 1)),
+        reason(reason),
+        leg(leg),
+        increment(increment) {}
+  std::string reason;
+  std::size_t leg;
+  int increment;
+};
 
 }  // namespace soilsph::verification

@@ -4,27 +4,53 @@
 #include <stdexcept>
 #include <string>
 
+#include "constitutive/parameters.h"
+
 namespace soilsph::verification {
 
 namespace {
 
-void validate(const PointTest& test) {
-  if (!(test.p_initial > 0.0) || !std::isfinite(test.p_initial))
-    throw std::invalid_argument("p_initial must be > 0 Pa, got " + std::to_string(test.p_initial));
-  if (!(test.ocr >= 1.0) || !std::isfinite(test.ocr))
-    throw std::invalid_argument("ocr must be >= 1, got " + std::to_string(test.ocr));
-  if (test.path == LoadPath::StrainPath) {
-    if (test.strain_increments.empty()) throw std::invalid_argument("the strain path has no increments");
-    return;
+/// "NAME = VALUE is out of range (allowed: ...)" unless `range` holds `value`.
+void require(std::string_view name, double value, const Range& range, std::string_view unit = "") {
+  if (range.contains(value)) return;
+  throw std::invalid_argument(std::string(name) + " = " + format_number(value) +
+                              " is out of range (allowed: " + range.describe() + (unit.empty() ? "" : " ") +
+                              std::string(unit) + ")");
+}
+
+constexpr std::string_view kComponents[3][3] = {
+    {"d_xx", "d_xy", "d_xz"}, {"d_xy", "d_yy", "d_yz"}, {"d_xz", "d_yz", "d_zz"}};
+
+/// Each increment of a strain path, and the strain accumulated up to it, within the small-strain range.
+void validate_strain_path(const PointTest& test) {
+  if (test.strain_increments.empty()) throw std::invalid_argument("the strain path has no increments");
+  Mat3 total = Mat3::Zero();
+  for (std::size_t n = 0; n < test.strain_increments.size(); ++n) {
+    const Mat3& d = test.strain_increments[n];
+    total += d;
+    const std::string where = describe_increment(test, n, 0) + ": ";
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i; j < 3; ++j) {
+        const std::string name(kComponents[i][j]);
+        require(where + name, d(i, j), point_limits::strain());
+        require(where + "eps_" + name.substr(2) + " accumulated up to this row", total(i, j),
+                point_limits::strain());
+      }
+    }
   }
-  if (test.increments < 1)
-    throw std::invalid_argument("increments must be >= 1, got " + std::to_string(test.increments));
+}
+
+void validate(const PointTest& test) {
+  require("p_initial", test.p_initial, point_limits::p_initial(), "Pa");
+  require("ocr", test.ocr, point_limits::ocr());
+  if (test.path == LoadPath::StrainPath) return validate_strain_path(test);
+  require("increments", test.increments, Range::closed(1, point_limits::kMaxIncrements));
   if (test.strain_targets.empty()) throw std::invalid_argument("strain_targets is empty");
   double previous = 0.0;
   for (double target : test.strain_targets) {
-    if (!std::isfinite(target)) throw std::invalid_argument("strain target is not finite");
+    require("strain target", target, point_limits::strain());
     if (target == previous)
-      throw std::invalid_argument("strain target " + std::to_string(target) + " gives a leg of zero length");
+      throw std::invalid_argument("strain target " + format_number(target) + " gives a leg of zero length");
     previous = target;
   }
 }
@@ -50,6 +76,18 @@ Vec6 driven_strain(LoadPath path, double d) {
 }
 
 }  // namespace
+
+std::string describe_increment(const PointTest& test, std::size_t leg, int increment) {
+  if (test.path == LoadPath::StrainPath) {
+    if (leg < test.strain_increment_sources.size()) return test.strain_increment_sources[leg];
+    return "row " + std::to_string(leg + 1) + " of the strain path";
+  }
+  const std::string driven = test.path == LoadPath::Isotropic ? "eps_v" : "eps_a";
+  const double from = leg == 0 ? 0.0 : test.strain_targets[leg - 1];
+  return "increment " + std::to_string(increment + 1) + " of " + std::to_string(test.increments) +
+         " of leg " + std::to_string(leg + 1) + " (" + driven + " from " + format_number(from) + " to " +
+         format_number(test.strain_targets[leg]) + ")";
+}
 
 std::vector<Leg> build_legs(const PointTest& test) {
   validate(test);

@@ -5,6 +5,8 @@
 /// increment. The mixed-control driver and the CVODE reference both consume legs, so they solve
 /// exactly the same problem.
 #include <array>
+#include <cstddef>
+#include <string>
 #include <vector>
 
 #include "constitutive/voigt.h"
@@ -22,13 +24,19 @@ struct Leg {
   int increments = 1;
 };
 
-/// The legs of `test` (validated: p_initial > 0, ocr ≥ 1, increments ≥ 1, legs of non-zero length,
-/// a non-empty strain path); throws std::invalid_argument naming the offending field.
+/// The legs of `test`, validated: p_initial, ocr, increments, each strain target and each
+/// strain-path increment and its running sum within point_limits, legs of non-zero length, a
+/// non-empty strain path; throws std::invalid_argument naming the offending field or row.
 ///  - triaxial-drained:   ε_xx driven, σ_yy, σ_zz held (stress imposed, zero increment), shear strains 0;
 ///  - triaxial-undrained: ε_xx driven, ε_yy = ε_zz = −ε_xx/2 (ε_v = 0), shear strains 0;
 ///  - oedometer:          ε_xx driven, all other strains 0;
 ///  - isotropic:          ε_xx = ε_yy = ε_zz = −ε_v/3 driven, shear strains 0;
 ///  - strain-path:        every strain component imposed, one increment per given tensor.
 std::vector<Leg> build_legs(const PointTest& test);
+
+/// Names increment `increment` of leg `leg` (both from 0) of `test` for messages: the strain-path
+/// row's "FILE:LINE" (test.strain_increment_sources) or "row N of the strain path", else e.g.
+/// "increment 3 of 100 of leg 2 (eps_a from 0.1 to 0.05)".
+std::string describe_increment(const PointTest& test, std::size_t leg, int increment);
 
 }  // namespace soilsph::verification

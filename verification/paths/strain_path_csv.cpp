@@ -28,8 +28,8 @@ std::string without_spaces(std::string s) {
 
 }  // namespace
 
-std::vector<Mat3> read_strain_path(std::istream& in, const std::string& source) {
-  std::vector<Mat3> increments;
+StrainPath read_strain_path(std::istream& in, const std::string& source) {
+  StrainPath path;
   bool header_seen = false;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -63,14 +63,15 @@ std::vector<Mat3> read_strain_path(std::istream& in, const std::string& source) 
                              "\" is not a finite number");
       d(kRow[c], kCol[c]) = d(kCol[c], kRow[c]) = value;
     }
-    increments.push_back(d);
+    path.increments.push_back(d);
+    path.sources.push_back(source + ":" + std::to_string(number));
   }
   if (!header_seen) throw ParameterError(source + ": no header row \"" + kHeader + "\"");
-  if (increments.empty()) throw ParameterError(source + ": no strain increments after the header");
-  return increments;
+  if (path.increments.empty()) throw ParameterError(source + ": no strain increments after the header");
+  return path;
 }
 
-std::vector<Mat3> read_strain_path_file(const std::string& path) {
+StrainPath read_strain_path_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ParameterError(path + ": cannot open the strain-path file");
   return read_strain_path(in, path);

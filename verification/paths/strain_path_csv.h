@@ -12,11 +12,17 @@
 
 namespace soilsph::verification {
 
+/// A strain path as read: its increments and where each was read, "SOURCE:LINE", for messages.
+struct StrainPath {
+  std::vector<Mat3> increments;
+  std::vector<std::string> sources;
+};
+
 /// The increments of the CSV `in`; `source` names it in errors. Throws ParameterError naming
 /// source and line for a missing/wrong header, a row without exactly 6 numbers, a non-finite
-/// value, or a file without increments.
-std::vector<Mat3> read_strain_path(std::istream& in, const std::string& source);
+/// value, or a file without increments. (Their range is checked with the test: build_legs().)
+StrainPath read_strain_path(std::istream& in, const std::string& source);
 /// The increments of the CSV file `path` (ParameterError if it cannot be opened).
-std::vector<Mat3> read_strain_path_file(const std::string& path);
+StrainPath read_strain_path_file(const std::string& path);
 
 }  // namespace soilsph::verification

@@ -218,49 +218,58 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   check(CVodeRootInit(s.memory, 1, switching_function<Model>), "CVodeRootInit", problem);
   check(CVodeSetNoInactiveRootWarn(s.memory), "CVodeSetNoInactiveRootWarn", problem);
 
-  for (const Leg& leg : legs) {
-    problem.leg = &leg;
-    problem.part = Partition(leg);
-    problem.plastic =
-        starts_plastic(model, leg, problem.part, stress_of(y), y[kPc], options.surface_tolerance);
-    check(CVodeReInit(s.memory, 0.0, s.y), "CVodeReInit", problem);
-    int direction = problem.plastic ? -1 : 1;
-    check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
-    sunrealtype t = 0.0;
-    for (int k = 1; k <= leg.increments; ++k) {
-      for (int switches = 0;; ++switches) {
-        if (k - t <= kTooClose) {
-          // A root a hair before the output time (e.g. reloading to the previous turning point,
-          // which falls on an increment): CVODE cannot start on such an interval, and one Euler
-          // step over it is exact to (k − t)² ≤ 1e-18 of an increment.
-          if (right_hand_side<Model>(t, s.y, s.rates, &problem) != 0)
-            throw std::runtime_error("cvode reference: " + problem.last_error);
-          N_VLinearSum(1.0, s.y, k - t, s.rates, s.y);
-          t = k;
+  std::size_t leg_index = 0;
+  int increment = 0;  // of the current leg, from 0: where a failure is reported
+  try {
+    for (const Leg& leg : legs) {
+      increment = 0;
+      problem.leg = &leg;
+      problem.part = Partition(leg);
+      problem.plastic =
+          starts_plastic(model, leg, problem.part, stress_of(y), y[kPc], options.surface_tolerance);
+      check(CVodeReInit(s.memory, 0.0, s.y), "CVodeReInit", problem);
+      int direction = problem.plastic ? -1 : 1;
+      check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
+      sunrealtype t = 0.0;
+      for (int k = 1; k <= leg.increments; ++k) {
+        for (int switches = 0;; ++switches) {
+          if (k - t <= kTooClose) {
+            // A root a hair before the output time (e.g. reloading to the previous turning point,
+            // which falls on an increment): CVODE cannot start on such an interval, and one Euler
+            // step over it is exact to (k − t)² ≤ 1e-18 of an increment.
+            if (right_hand_side<Model>(t, s.y, s.rates, &problem) != 0)
+              throw std::runtime_error("cvode reference: " + problem.last_error);
+            N_VLinearSum(1.0, s.y, k - t, s.rates, s.y);
+            t = k;
+            check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
+            break;
+          }
+          problem.last_error.clear();
+          const int flag = CVode(s.memory, k, s.y, &t, CV_NORMAL);
+          check(flag, "CVode", problem);
+          if (flag != CV_ROOT_RETURN) break;
+          if (switches > 100)
+            throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
+          // Switch branch at the root and restart there, so no step straddles the kink: to elastic
+          // where λ̇ reached 0; to plastic where f reached 0 unless the loading is tangential and
+          // turns inwards (then the state stays elastic).
+          problem.plastic = !problem.plastic && starts_plastic(model, leg, problem.part, stress_of(y), y[kPc],
+                                                               std::numeric_limits<double>::infinity());
+          direction = problem.plastic ? -1 : 1;
           check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
-          break;
+          check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
         }
-        problem.last_error.clear();
-        const int flag = CVode(s.memory, k, s.y, &t, CV_NORMAL);
-        check(flag, "CVode", problem);
-        if (flag != CV_ROOT_RETURN) break;
-        if (switches > 100)
-          throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
-        // Switch branch at the root and restart there, so no step straddles the kink: to elastic
-        // where λ̇ reached 0; to plastic where f reached 0 unless the loading is tangential and
-        // turns inwards (then the state stays elastic).
-        problem.plastic = !problem.plastic && starts_plastic(model, leg, problem.part, stress_of(y), y[kPc],
-                                                             std::numeric_limits<double>::infinity());
-        direction = problem.plastic ? -1 : 1;
-        check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
-        check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
+        PointSample sample;
+        sample.strain = strain_from_voigt(Eigen::Map<const Vec6>(y + kStrain));
+        sample.state.stress = stress_from_voigt(stress_of(y));
+        sample.state.pc = y[kPc];
+        history.push_back(sample);
+        increment = k;
       }
-      PointSample sample;
-      sample.strain = strain_from_voigt(Eigen::Map<const Vec6>(y + kStrain));
-      sample.state.stress = stress_from_voigt(stress_of(y));
-      sample.state.pc = y[kPc];
-      history.push_back(sample);
+      ++leg_index;
     }
+  } catch (const std::runtime_error& e) {
+    throw IncrementError(e.what(), leg_index, increment);
   }
   return history;
 }

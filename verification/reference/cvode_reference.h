@@ -31,7 +31,7 @@ struct CvodeOptions {
 };
 
 /// Integrates every leg from `initial`: one sample per increment, the initial state first.
-/// Throws std::runtime_error with CVODE's message when the integration fails.
+/// Throws IncrementError with CVODE's message when the integration fails.
 PointHistory cvode_reference(const Material& material, const State& initial, std::span<const Leg> legs,
                              const CvodeOptions& options = {});
 

@@ -69,10 +69,10 @@ VerificationCase read_case(const toml::table& table, const fs::path& file, std::
   VerificationCase c{name, file.string(), material_file, load_material(material_file), PointTest{}, "none",
                      {}};
   c.test.path = parse_load_path(reader.choice("path", kPathChoices));
-  c.test.p_initial = reader.number_or("p_initial", 100e3, Range::positive(), "Pa");
-  c.test.ocr = reader.number_or("ocr", 1.0, Range::closed_open(1.0, 1e6));
+  c.test.p_initial = reader.number_or("p_initial", 100e3, point_limits::p_initial(), "Pa");
+  c.test.ocr = reader.number_or("ocr", 1.0, point_limits::ocr());
   c.test.strain_targets = strain_targets(table, reader);
-  c.test.increments = static_cast<int>(reader.integer_or("increments", 100, 1, 1000000));
+  c.test.increments = static_cast<int>(reader.integer_or("increments", 100, 1, point_limits::kMaxIncrements));
   c.closed_form = reader.choice_or("closed_form", "none", kClosedFormNames);
   if (c.closed_form != "none") {
     try {  // the closed form's own checks (model, elasticity, path, OCR range) at its initial state

@@ -1,0 +1,84 @@
+#include "constitutive/material_description.h"
+
+#include <charconv>
+
+namespace soilsph {
+
+namespace {
+using Parameters = std::vector<std::pair<std::string, std::string>>;
+
+std::string number(double x) {
+  return exact_number(x);
+}
+std::string quoted(std::string_view text) {
+  return "\"" + std::string(text) + "\"";
+}
+
+void add_common(Parameters& out, std::string_view model, double density) {
+  out.emplace_back("model", quoted(model));
+  out.emplace_back("density", number(density));
+}
+
+Parameters parameters(const LinearElastic& m) {
+  Parameters out;
+  add_common(out, LinearElastic::kName, m.params().density);
+  out.emplace_back("young_modulus", number(m.params().young_modulus));
+  out.emplace_back("poisson_ratio", number(m.params().poisson_ratio));
+  return out;
+}
+
+Parameters parameters(const DruckerPrager& m) {
+  const auto& p = m.params();
+  Parameters out;
+  add_common(out, DruckerPrager::kName, p.density);
+  out.emplace_back("young_modulus", number(p.young_modulus));
+  out.emplace_back("poisson_ratio", number(p.poisson_ratio));
+  out.emplace_back("friction_angle", number(p.friction_angle));
+  out.emplace_back("cohesion", number(p.cohesion));
+  out.emplace_back("dilatancy_angle", number(p.dilatancy_angle));
+  out.emplace_back("integrator", quoted(integrator_name(p.integrator)));
+  out.emplace_back("substep_tolerance", number(p.substep_tolerance));
+  return out;
+}
+
+Parameters parameters(const ModifiedCamClay& m) {
+  const auto& p = m.params();
+  const bool constant = p.elasticity == Elasticity::Kind::Constant;
+  Parameters out;
+  add_common(out, ModifiedCamClay::kName, p.density);
+  if (constant) out.emplace_back("young_modulus", number(p.young_modulus));
+  out.emplace_back("poisson_ratio", number(p.poisson_ratio));
+  out.emplace_back("friction_angle", number(p.friction_angle));
+  out.emplace_back("compression_index", number(p.compression_index));
+  out.emplace_back("swelling_index", number(p.swelling_index));
+  out.emplace_back("initial_void_ratio", number(p.initial_void_ratio));
+  out.emplace_back("elasticity", quoted(constant ? "constant" : "pressure-dependent"));
+  if (!constant) out.emplace_back("elastic_pressure_floor", number(p.elastic_pressure_floor));
+  out.emplace_back("integrator", quoted(integrator_name(p.integrator)));
+  out.emplace_back("substep_tolerance", number(p.substep_tolerance));
+  out.emplace_back("implicit_alpha", number(p.implicit_alpha));
+  return out;
+}
+}  // namespace
+
+std::string exact_number(double x) {
+  // Plain digits where they are short (100000, not 1e+05), else the shortest form.
+  char buffer[400];
+  auto result = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::fixed);
+  if (result.ec == std::errc() && result.ptr - buffer <= 12) return std::string(buffer, result.ptr);
+  result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+std::vector<std::pair<std::string, std::string>> material_parameters(const Material& material) {
+  return std::visit([](const auto& model) { return parameters(model); }, material);
+}
+
+std::string describe_material(const Material& material) {
+  std::string line;
+  for (const auto& [key, value] : material_parameters(material))
+    line += (line.empty() ? "" : "; ") + key + " = " + value;
+  return line;
+}
+
+}  // namespace soilsph

@@ -1,0 +1,20 @@
+#pragma once
+/// @file
+/// Upper bounds of material keys beyond which results lose meaning (README.md, "Materials").
+#include "constitutive/parameters.h"
+
+namespace soilsph::limits {
+
+/// Largest stress, Pa, that an input (cohesion, pressure floor, initial stress) or a result may
+/// hold: three times the pressure at the centre of the Earth (3.6e11 Pa), beyond any soil. A result
+/// past it is an integration that ran away (e.g. explicit MCC hardening on huge strain increments).
+inline constexpr double kMaxStress = 1e12;
+/// Largest Young's modulus, Pa: five times the stiffest rock's (≈ 2e11 Pa). An update adds E·Δε to
+/// stresses of order p in double precision, so above it the stress state drowns in round-off: with
+/// E = 1e24 the explicit D-P undrained path returned p' = 0 instead of 100 kPa.
+inline constexpr double kMaxYoungModulus = 1e12;
+
+inline Range young_modulus_range() { return Range::open_closed(0.0, kMaxYoungModulus); }
+inline Range stress_range() { return Range::open_closed(0.0, kMaxStress); }  ///< (0, kMaxStress]
+
+}  // namespace soilsph::limits
