@@ -23,11 +23,14 @@ namespace soilsph::fuzz {
 
 namespace {
 
+/// The first `cap` bytes of a file (allocated by the file's size, not by the cap).
 std::string read_capped(const fs::path& path, std::size_t cap = 1 << 20) {
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
   std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  std::string text(cap, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(cap));
+  if (ec || !in) return "";
+  std::string text(static_cast<std::size_t>(std::min<std::uintmax_t>(size, cap)), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));
   return text;
 }
@@ -293,7 +296,12 @@ RunReport run(const Config& config) {
       else if (indices.size() >= 1000 && finished % (indices.size() / 20) == 0)
         std::cerr << "fuzz: " << finished << " of " << indices.size() << " cases, " << report.failures.size()
                   << " failing\n";
-      if (!r.findings.empty()) report.failures.push_back(std::move(r));
+      if (!r.findings.empty()) {
+        // The report needs stderr's last line, not a point run's CSV (kept in the case folder).
+        r.outcome.out = last_line(r.outcome.out);
+        r.outcome.out.shrink_to_fit();
+        report.failures.push_back(std::move(r));
+      }
     }
   };
   std::vector<std::thread> threads;
