@@ -959,6 +959,7 @@ const std::vector<std::string> kFiniteCells = {"1e308",  "-1e308", "1e30",  "-1e
 CsvMutation mutate_csv(Rng& rng, std::string& text) {
   CsvMutation m;
   std::vector<std::string> lines = split_lines(text);
+  if (lines.empty()) lines.push_back("");  // (a second mutation of an emptied file) so that header < size
   std::vector<std::size_t> rows;
   std::size_t header = 0;
   for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -1045,7 +1046,8 @@ CsvMutation mutate_csv(Rng& rng, std::string& text) {
       m.words = "header deleted";
       m.why = "the first row is not the header";
     } else if (which == 4) {
-      lines.insert(lines.begin() + static_cast<long>(header) + 2, lines[header]);
+      const std::string copy = lines[header];
+      lines.insert(lines.begin() + static_cast<long>(std::min(header + 2, lines.size())), copy);
       m.words = "header repeated as line " + std::to_string(header + 3);
       m.why = "a row of names is not numbers";
       m.line = static_cast<int>(header + 3);

@@ -1,6 +1,7 @@
 // The input fuzzer of issue #10 item 8 (docs/fuzzing.md): the harness's own checks, then the fuzz run.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <fstream>
 #include <iostream>
@@ -136,6 +137,17 @@ TEST_CASE("fuzz harness: a case is a function of (seed, index)", "[fuzz][harness
     differ += other.args != a.args || other.mutations != a.mutations;
   }
   CHECK(differ > 150);
+}
+
+TEST_CASE("fuzz harness: the cases of a long run can all be made", "[fuzz][harness]") {
+  // The generator alone (no run) over more cases than the documented long run, so that a mutation
+  // of an already mutated file cannot crash it hours into a run.
+  const Config config = Config::from_environment(kExe, kSource, kWork);
+  const Inputs inputs = Inputs::load(kSource);
+  std::size_t files = 0;
+  for (std::uint64_t index = 0; index < std::max<std::uint64_t>(12000, config.first + config.count); ++index)
+    files += make_case(inputs, config.seed, index).files.size();
+  CHECK(files > 0);
 }
 
 TEST_CASE("fuzz harness: every unmutated input passes every check", "[fuzz][harness]") {
