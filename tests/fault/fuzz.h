@@ -94,7 +94,7 @@ struct Outcome {
 /// Limits of a child: wall time; address space (so that a runaway allocation fails at once instead of
 /// swapping the shared machine); file size (output of runs that never stop).
 struct Limits {
-  double timeout_seconds = 5.0;
+  double timeout_seconds = 20.0;  ///< an unmutated case takes 0.1 s; the largest valid one about 5 s
   std::uint64_t address_space_bytes = 4ull << 30;
   std::uint64_t file_size_bytes = 1ull << 30;
 };

@@ -203,7 +203,7 @@ Config Config::from_environment(std::string executable, std::string source_dir, 
   c.jobs = static_cast<int>(std::max<std::uint64_t>(1, env_number("SOILSPH_FUZZ_JOBS", 2)));
   c.keep_all = env_number("SOILSPH_FUZZ_KEEP", 0) != 0;
   c.verbose = env_number("SOILSPH_FUZZ_VERBOSE", 0) != 0;
-  c.limits.timeout_seconds = static_cast<double>(env_number("SOILSPH_FUZZ_TIMEOUT", 5));
+  c.limits.timeout_seconds = static_cast<double>(env_number("SOILSPH_FUZZ_TIMEOUT", 20));
   c.limits.address_space_bytes = env_number("SOILSPH_FUZZ_MEMORY_MB", 4096) << 20;
   if (const char* only = std::getenv("SOILSPH_FUZZ_CASE"); only && *only) {
     std::stringstream s(only);
@@ -246,11 +246,11 @@ RunReport run(const Config& config) {
         out.write(f.content.data(), static_cast<std::streamsize>(f.content.size()));
       }
       // A run on more than one thread waits at every barrier for threads that share the (busy) cores
-      // with the other jobs: it gets four times the time before it counts as a hang.
+      // with the other jobs: it gets twice the time before it counts as a hang.
       Limits limits = config.limits;
       const auto threads = std::find(r.c.args.begin(), r.c.args.end(), "--threads");
       if (threads != r.c.args.end() && threads + 1 != r.c.args.end() && threads[1] != "1")
-        limits.timeout_seconds *= 4;
+        limits.timeout_seconds *= 2;
       r.outcome = run_child(config.executable, r.c.args, dir, limits);
       r.findings = check(r.c, r.outcome, dir);
       if (r.outcome.status == Outcome::Status::Exited && r.outcome.code >= 0 && r.outcome.code <= 2) {
