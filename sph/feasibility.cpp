@@ -45,7 +45,8 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
   if (c <= free_fall) {
     msg << "the soil is too soft to carry its own weight: its P-wave speed c = " << c
         << " m/s is below the free-fall speed sqrt(2 g H) = " << free_fall
-        << " m/s, where the weakly compressible scheme needs |v| << c (raise [material] young_modulus)";
+        << " m/s, where the weakly compressible scheme needs |v| << c (raise [material] young_modulus, or lower "
+           "[scene] gravity or column_height)";
     throw ParameterError(msg.str());
   }
   if (e.memory_bytes > memory_available) {

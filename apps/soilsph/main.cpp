@@ -24,7 +24,18 @@ std::string shell_quoted(const std::string& word) {
 }  // namespace
 
 const std::string& invocation() { return g_invocation; }
+
+/// A message as one readable line: a value quoted from the input may be 100 000 characters long.
+std::string one_line(std::string message) {
+  constexpr std::size_t kMost = 1000;
+  for (char& c : message) c = c == '\n' ? ' ' : c;
+  if (message.size() <= kMost) return message;
+  return message.substr(0, kMost - 200) + " […" + std::to_string(message.size() - kMost + 100) + " characters cut…] " +
+         message.substr(message.size() - 100);
+}
 }  // namespace soilsph::cli
+
+using soilsph::cli::one_line;
 
 int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i)
@@ -58,12 +69,16 @@ int main(int argc, char** argv) {
   } catch (const soilsph::cli::ExitCode& e) {
     return e.code;
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help and --version: 0; a bad command line is an input error: 2
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help and --version
+    // A bad command line is an input error: one `error:` line like every other, exit 2.
+    std::cerr << one_line("error: " + std::string(e.what()) + " (soilsph --help lists the commands and options)")
+              << '\n';
+    return 2;
   } catch (const soilsph::ParameterError& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    std::cerr << one_line(std::string("error: ") + e.what()) << '\n';
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    std::cerr << one_line(std::string("error: ") + e.what()) << '\n';
     return 1;
   }
   return 0;
