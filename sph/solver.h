@@ -248,7 +248,10 @@ class StepClock {
   bool step_taken() {
     t_ = lands_ ? setup_.end_time : t_ + dt_;  // the end exactly, without accumulated round-off
     if (t_ < next_frame_ - 0.5 * dt_ && !lands_) return false;
-    while (next_frame_ <= t_ + 0.5 * dt_) next_frame_ += setup_.frame_interval;
+    // The first multiple of the interval beyond this step (not repeated additions, which stop
+    // advancing when the interval is below the round-off of the time).
+    const double interval = setup_.frame_interval;
+    next_frame_ = std::max(next_frame_, interval * (std::floor((t_ + 0.5 * dt_) / interval) + 1.0));
     return true;
   }
   bool at_end() const { return t_ >= setup_.end_time; }
