@@ -29,17 +29,26 @@ RunEstimate estimate_run(const Scene& scene) {
   e.memory_bytes = (soil + boundary) * kBytesPerParticle;
   e.time_step = make_solver_setup(scene).initial_time_step();
   e.steps = g.end_time / e.time_step;
-  e.seconds = e.steps * soil / kAssumedThroughput;
+  e.seconds = e.steps * (soil + boundary) / kAssumedThroughput;  // ghosts are paired and mirrored too
   return e;
 }
+
+namespace {
+/// Throws the message with the `--set` options it may come from: a refusal must name the option
+/// that made the scene what it is, not only the file.
+[[noreturn]] void refuse(const Scene& scene, const std::string& message) {
+  std::string origin;
+  for (const std::string& assignment : scene.overrides) origin += (origin.empty() ? "" : ", ") + assignment;
+  throw ParameterError(scene.source + ": " + message + (origin.empty() ? "" : " [with --set " + origin + "]"));
+}
+}  // namespace
 
 void check_feasible(const Scene& scene, const RunEstimate& e, double memory_available) {
   const Geometry& g = scene.geometry;
   std::ostringstream msg;
-  msg << scene.source << ": ";
   if (!(e.time_step > 0.0) || !std::isfinite(e.time_step)) {
     msg << "the time step " << e.time_step << " s is not finite and positive (check the material's stiffness)";
-    throw ParameterError(msg.str());
+    refuse(scene, msg.str());
   }
   const double c = make_solver_setup(scene).sound_speed, free_fall = std::sqrt(2.0 * g.gravity * g.column_height);
   if (c <= free_fall) {
@@ -47,21 +56,21 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
         << " m/s is below the free-fall speed sqrt(2 g H) = " << free_fall
         << " m/s, where the weakly compressible scheme needs |v| << c (raise [material] young_modulus, or lower "
            "[scene] gravity or column_height)";
-    throw ParameterError(msg.str());
+    refuse(scene, msg.str());
   }
   if (e.memory_bytes > memory_available) {
     msg << "the scene needs about " << e.memory_bytes / 1e9 << " GB for " << static_cast<double>(e.soil_particles)
         << " soil and " << static_cast<double>(e.boundary_particles) << " boundary particles; this machine has "
         << memory_available / 1e9 << " GB (a larger [scene] particle_spacing)";
-    throw ParameterError(msg.str());
+    refuse(scene, msg.str());
   }
   const double limit = scene.limits.max_run_hours * 3600.0;
   if (e.seconds > limit) {
     msg << "the run would take about " << human_duration(e.seconds) << " (" << e.steps << " steps of "
         << e.time_step << " s to [scene] end_time = " << g.end_time << " s with "
-        << static_cast<double>(e.soil_particles) << " soil particles), more than [scene] max_run_hours = "
+        << static_cast<double>(e.soil_particles + e.boundary_particles) << " particles), more than [scene] max_run_hours = "
         << scene.limits.max_run_hours << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
-    throw ParameterError(msg.str());
+    refuse(scene, msg.str());
   }
 }
 

@@ -16,7 +16,7 @@ struct RunEstimate {
   double memory_bytes = 0;  ///< particles, states, neighbour list, step buffers
   double time_step = 0;     ///< s, the CFL step at rest: the largest the run takes while c holds
   double steps = 0;         ///< to the end time at that step: the fewest it can take
-  double seconds = 0;       ///< steps × soil particles at kAssumedThroughput
+  double seconds = 0;       ///< steps × (soil + boundary particles) at kAssumedThroughput
 };
 
 /// Particle-steps per second assumed by the estimate: the slowest measured one-thread rate

@@ -119,8 +119,8 @@ Numerics read_numerics(const TableReader& t) {
 OutputSettings read_output(const TableReader& t, double end_time) {
   OutputSettings o{};
   // At most 10 000 frames: each frame rewrites the indexes of all before (sph/output/frame_writer.h).
-  o.frame_interval =
-      t.number_or("frame_interval", 0.01, Range::closed_open(end_time * 1e-4, end_time * (1 + 1e-9)), "s");
+  o.frame_interval = t.number_or("frame_interval", std::max(0.01, end_time * 1e-4),
+                                 Range::closed_open(end_time * 1e-4, end_time * (1 + 1e-9)), "s");
   o.layer_thickness = t.number_or("layer_thickness", 0.01, Range::positive(), "m");
   for (const std::string& name : t.choices_or("fields", kFieldNames, kFieldNames))
     o.fields.insert(*field_named(name));
@@ -155,6 +155,7 @@ Scene read_scene(const toml::table& root, const std::string& source) {
     throw ParameterError(source + ": the weight of the column overflows: [material] density x [scene] gravity x "
                          "[scene] column_height is not a finite stress (Pa)");
   Scene result{source,
+               {},
                geometry,
                read_initial(initial, material, geometry),
                read_numerics(numerics),
@@ -172,7 +173,9 @@ Scene read_scene(const toml::table& root, const std::string& source) {
 Scene load_scene(const std::string& path, std::span<const std::string> overrides) {
   toml::table root = parse_toml_file(path);
   for (const std::string& assignment : overrides) apply_override(root, assignment);
-  return read_scene(root, path);
+  Scene scene = read_scene(root, path);
+  scene.overrides.assign(overrides.begin(), overrides.end());
+  return scene;
 }
 
 Scene parse_scene(const std::string& text, const std::string& source, std::span<const std::string> overrides) {
@@ -184,7 +187,9 @@ Scene parse_scene(const std::string& text, const std::string& source, std::span<
                          std::string(e.description()));
   }
   for (const std::string& assignment : overrides) apply_override(root, assignment);
-  return read_scene(root, source);
+  Scene scene = read_scene(root, source);
+  scene.overrides.assign(overrides.begin(), overrides.end());
+  return scene;
 }
 
 std::string scene_toml(const Scene& scene) {

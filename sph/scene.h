@@ -62,7 +62,8 @@ struct RunLimits {
 };
 
 struct Scene {
-  std::string source;  ///< file name, for messages
+  std::string source;                  ///< file name, for messages
+  std::vector<std::string> overrides;  ///< the `--set section.key=value` applied, for messages
   Geometry geometry;
   InitialConditions initial;
   Numerics numerics;
