@@ -44,13 +44,17 @@ inline constexpr const char* kBlowUpHint =
     " (a smaller [numerics] cfl, a stiffer material or more artificial viscosity usually helps; "
     "docs/sph.md, Blow-up detection)";
 
-/// The first insane value met in a particle's close-of-step state, or an empty string.
+/// True if particle i's close-of-step state is sane: speed² v2 at most c², density finite and
+/// positive, inside the domain. NaN fails every comparison, so a non-finite value is never sane.
+inline bool particle_sane(const Particles& p, std::size_t i, double v2, double c2, const Domain& domain) {
+  return v2 <= c2 && p.density[i] > 0.0 && std::isfinite(p.density[i]) && domain.contains(p.x[i], p.y[i]);
+}
+
+/// What is insane about particle i (particle_sane() is false): the message naming it.
 inline std::string particle_blow_up(const Particles& p, std::size_t i, double sound_speed, const Domain& domain) {
   const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
   const bool finite = std::isfinite(p.x[i] + p.y[i] + v2 + p.density[i]);
-  const bool fast = v2 > sound_speed * sound_speed, outside = !domain.contains(p.x[i], p.y[i]),
-             empty = !(p.density[i] > 0.0);
-  if (finite && !fast && !outside && !empty) return {};
+  const bool fast = v2 > sound_speed * sound_speed, outside = !domain.contains(p.x[i], p.y[i]);
   std::ostringstream out;
   out << "blow-up: soil particle " << i << " at (" << p.x[i] << ", " << p.y[i] << ") m";
   if (!finite)

@@ -27,7 +27,9 @@ RunEstimate estimate_run(const Scene& scene) {
   e.soil_particles = soil < 1e18 ? static_cast<std::size_t>(soil) : static_cast<std::size_t>(1e18);
   e.boundary_particles = boundary < 1e18 ? static_cast<std::size_t>(boundary) : static_cast<std::size_t>(1e18);
   e.memory_bytes = (soil + boundary) * kBytesPerParticle;
-  e.time_step = make_solver_setup(scene).initial_time_step();
+  const SolverSetup setup = make_solver_setup(scene);
+  e.sound_speed = setup.sound_speed;
+  e.time_step = setup.initial_time_step();
   e.steps = g.end_time / e.time_step;
   e.seconds = e.steps * (soil + boundary) / kAssumedThroughput;  // ghosts are paired and mirrored too
   return e;
@@ -50,7 +52,7 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
     msg << "the time step " << e.time_step << " s is not finite and positive (check the material's stiffness)";
     refuse(scene, msg.str());
   }
-  const double c = make_solver_setup(scene).sound_speed, free_fall = std::sqrt(2.0 * g.gravity * g.column_height);
+  const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity * g.column_height);
   if (c <= free_fall) {
     msg << "the soil is too soft to carry its own weight: its P-wave speed c = " << c
         << " m/s is below the free-fall speed sqrt(2 g H) = " << free_fall

@@ -14,6 +14,7 @@ namespace soilsph::sph {
 struct RunEstimate {
   std::size_t soil_particles = 0, boundary_particles = 0;
   double memory_bytes = 0;  ///< particles, states, neighbour list, step buffers
+  double sound_speed = 0;   ///< m/s, the P-wave speed c at the start
   double time_step = 0;     ///< s, the CFL step at rest: the largest the run takes while c holds
   double steps = 0;         ///< to the end time at that step: the fewest it can take
   double seconds = 0;       ///< steps × (soil + boundary particles) at kAssumedThroughput

@@ -106,10 +106,7 @@ void close_step(const Model& model, const SolverSetup& setup, Particles& p, Work
     v2_max = std::max(v2_max, v2);
     moving += v2 > rest2;
     kinetic += 0.5 * p.mass[i] * v2;
-    // NaN fails every comparison: the sound case is written so that it passes only finite values.
-    const bool sane = v2 <= c2 && p.density[i] > 0.0 && setup.domain.contains(p.x[i], p.y[i]) &&
-                      std::isfinite(p.density[i]);
-    if (!sane && first_insane == p.soil_count) first_insane = i;
+    if (first_insane == p.soil_count && !particle_sane(p, i, v2, c2, setup.domain)) first_insane = i;
   }
   work.max_speed = std::sqrt(v2_max);
   work.moving = moving;

@@ -175,8 +175,9 @@ void run_collapse(const CollapseOptions& o) {
   FrameWriter writer =
       resumed ? FrameWriter::continuing(dir, scene.output.fields, resumed->loop.stats.end_time)
               : FrameWriter(dir, scene.output.fields);
+  const std::string scene_text = scene_toml(scene);
   replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
-                                       std::string(kVersion) + ")\n# " + invocation() + "\n" + scene_toml(scene));
+                                       std::string(kVersion) + ")\n# " + invocation() + "\n" + scene_text);
   Summary summary = describe(scene, collapse, tuner.threads());
   if (resumed) {
     summary.resumed_from = resumed->loop.stats.end_time;
@@ -189,7 +190,6 @@ void run_collapse(const CollapseOptions& o) {
   const StopSignal signal;
   RunControl control;
   control.stop_requested = [&] { return signal.received() != 0; };
-  const std::string scene_text = scene_toml(scene);
   control.checkpoint = [&](const Particles& p, const LoopState& loop) {
     write_checkpoint(dir / "checkpoint.h5", p, loop, scene_text);
   };
