@@ -74,6 +74,13 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
         << scene.limits.max_run_hours << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
     refuse(scene, msg.str());
   }
+  const double frames = g.end_time / scene.output.frame_interval;
+  if (frames > kMaxFrames) {
+    msg << "[output] frame_interval = " << scene.output.frame_interval << " s gives " << frames
+        << " frames to [scene] end_time = " << g.end_time << " s, more than " << kMaxFrames
+        << " (each frame rewrites the frame indexes; a larger frame_interval)";
+    refuse(scene, msg.str());
+  }
 }
 
 double physical_memory() {

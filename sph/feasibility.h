@@ -26,12 +26,17 @@ inline constexpr double kAssumedThroughput = 5e5;
 /// Bytes per particle (soil or ghost): measured 2645 B with 48 neighbour slots (docs/sph.md).
 inline constexpr double kBytesPerParticle = 2700;
 
+/// Most frames a run may write: each frame rewrites the indexes of all before it
+/// (sph/output/frame_writer.h), so their cost grows with the square of the count.
+inline constexpr double kMaxFrames = 1e4;
+
 RunEstimate estimate_run(const Scene& scene);
 
 /// Throws ParameterError, naming the scene, the numbers and the key that changes them, if the time
 /// step is not finite and positive, the soil is too soft to carry its own weight (P-wave speed below
 /// the free-fall speed √(2gH): the weakly compressible scheme needs |v| ≪ c), the memory exceeds
-/// `memory_available` bytes, or the estimated run time exceeds [scene] max_run_hours.
+/// `memory_available` bytes, the estimated run time exceeds [scene] max_run_hours, or the frames
+/// would be more than kMaxFrames.
 void check_feasible(const Scene& scene, const RunEstimate& estimate, double memory_available);
 
 /// Physical memory of this machine (bytes).
