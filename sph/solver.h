@@ -322,14 +322,19 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
                                ? setup.checkpoint_interval * (std::floor(clock.time() / setup.checkpoint_interval) + 1)
                                : std::numeric_limits<double>::infinity();
   bool checkpoint_before_end = false;  // written before the steps shortened onto the end time
+  const auto statistics_now = [&] {  // the counts kept elsewhere during the loop, gathered
+    RunStatistics now = stats;
+    now.end_time = clock.time();
+    now.wall_seconds = wall_before + std::chrono::duration<double>(Clock::now() - start).count();
+    now.guard_corrections = work.guard_corrections;
+    now.fallback_stress_updates = work.failure.fallback_updates();
+    return now;
+  };
   const auto checkpoint = [&] {
     if (!control.checkpoint) return;
-    LoopState state{stats, clock.next_frame(), work.previous_dt, work.sound_speed, work.max_speed, work.moving,
-                    rest.memory(), {}, {}};
-    state.stats.end_time = clock.time();
-    state.stats.wall_seconds = wall_before + std::chrono::duration<double>(Clock::now() - start).count();
-    state.stats.guard_corrections = work.guard_corrections;
-    state.stats.fallback_stress_updates = work.failure.fallback_updates();
+    LoopState state{statistics_now(), clock.next_frame(), work.previous_dt, work.sound_speed,
+                    work.max_speed,   work.moving,        rest.memory(),    {},
+                    {}};
     state.search_x = work.neighbours.search_x();
     state.search_y = work.neighbours.search_y();
     control.checkpoint(p, state);
@@ -407,11 +412,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   }
 
   if (error) std::rethrow_exception(error);
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  stats.end_time = clock.time();
-  stats.wall_seconds = wall_before + elapsed.count();
-  stats.guard_corrections = work.guard_corrections;
-  stats.fallback_stress_updates = work.failure.fallback_updates();
+  stats = statistics_now();
   stats.workspace_bytes =
       work.neighbours.bytes_per_particle() * p.size() + 3 * p.size() * sizeof(double);  // the *_next buffers
   return stats;
