@@ -39,9 +39,7 @@ namespace {
 /// Throws the message with the `--set` options it may come from: a refusal must name the option
 /// that made the scene what it is, not only the file.
 [[noreturn]] void refuse(const Scene& scene, const std::string& message) {
-  std::string origin;
-  for (const std::string& assignment : scene.overrides) origin += (origin.empty() ? "" : ", ") + assignment;
-  throw ParameterError(scene.source + ": " + message + (origin.empty() ? "" : " [with --set " + origin + "]"));
+  throw ParameterError(scene.source + ": " + message + overrides_note(scene.overrides));
 }
 }  // namespace
 

@@ -169,12 +169,33 @@ Scene read_scene(const toml::table& root, const std::string& source) {
   return result;
 }
 
+namespace {
+/// Reads `root` after the overrides. A key of the file refused because of another key that --set
+/// changed (a spacing that no longer divides a column height set with --set) must name the option:
+/// such a refusal lists the options applied.
+Scene read_overridden(toml::table& root, const std::string& source, std::span<const std::string> overrides) {
+  for (const std::string& assignment : overrides) apply_override(root, assignment);
+  try {
+    Scene scene = read_scene(root, source);
+    scene.overrides.assign(overrides.begin(), overrides.end());
+    return scene;
+  } catch (const ParameterError& e) {
+    const std::string what = e.what();
+    if (what.starts_with(kOverridePrefix)) throw;  // already names its option
+    throw ParameterError(what + overrides_note(overrides));
+  }
+}
+}  // namespace
+
+std::string overrides_note(std::span<const std::string> overrides) {
+  std::string list;
+  for (const std::string& assignment : overrides) list += (list.empty() ? "" : ", ") + assignment;
+  return list.empty() ? "" : " [with --set " + list + "]";
+}
+
 Scene load_scene(const std::string& path, std::span<const std::string> overrides) {
   toml::table root = parse_toml_file(path);
-  for (const std::string& assignment : overrides) apply_override(root, assignment);
-  Scene scene = read_scene(root, path);
-  scene.overrides.assign(overrides.begin(), overrides.end());
-  return scene;
+  return read_overridden(root, path, overrides);
 }
 
 Scene parse_scene(const std::string& text, const std::string& source, std::span<const std::string> overrides) {
@@ -185,10 +206,7 @@ Scene parse_scene(const std::string& text, const std::string& source, std::span<
     throw ParameterError(source + ":" + std::to_string(e.source().begin.line) + ": " +
                          std::string(e.description()));
   }
-  for (const std::string& assignment : overrides) apply_override(root, assignment);
-  Scene scene = read_scene(root, source);
-  scene.overrides.assign(overrides.begin(), overrides.end());
-  return scene;
+  return read_overridden(root, source, overrides);
 }
 
 std::string scene_toml(const Scene& scene) {

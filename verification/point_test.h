@@ -18,8 +18,8 @@ namespace soilsph::verification {
 /// Where a test's inputs keep their meaning (README.md, `soilsph point`); run_point_test rejects
 /// anything outside with std::invalid_argument.
 namespace point_limits {
-/// |strain| of a target, a strain-path increment and the strain accumulated along a path: the
-/// models are small-strain, and a volumetric strain of 1 would leave no volume.
+/// |strain| of a target, a strain-path increment and the strain accumulated along a path, below 1:
+/// the models are small-strain, and a volumetric strain of 1 would leave no volume.
 inline constexpr double kMaxStrain = 1.0;
 /// A result whose |strain| exceeds this (ten times any imposed strain) has lost meaning.
 inline constexpr double kMaxResultStrain = 10.0 * kMaxStrain;
@@ -35,7 +35,7 @@ inline Range ocr() {
   return Range::closed_open(1.0, 1e6);
 }
 inline Range strain() {
-  return Range::closed(-kMaxStrain, kMaxStrain);
+  return Range::open(-kMaxStrain, kMaxStrain);
 }
 }  // namespace point_limits
 

@@ -23,7 +23,7 @@ struct PointOptions {
   std::string strain_path;
   double p_initial = 100e3;
   double ocr = 1.0;
-  std::vector<double> strain_max = {0.1};
+  std::string strain_max = "0.1";  ///< comma-separated targets, checked by list_in_range
   int increments = 100;
   std::string integrator{kDefaultPointIntegrator};
   std::string out;
@@ -77,7 +77,7 @@ verification::PointTest point_test(const PointOptions& o, bool legs_given) {
   }
   test.p_initial = o.p_initial;
   test.ocr = o.ocr;
-  test.strain_targets = o.strain_max;
+  test.strain_targets = split_numbers(o.strain_max);
   test.increments = o.increments;
   return test;
 }
@@ -181,9 +181,8 @@ void add_point_command(CLI::App& app) {
   auto* strain_max = cmd->add_option("--strain-max", o->strain_max,
                                      "targets of the driven strain, compression-positive, one leg each "
                                      "(axial; volumetric for isotropic), e.g. 0.1,0.05,0.15")
-                         ->delimiter(',')
                          ->capture_default_str()
-                         ->check(in_range(limits::strain()));
+                         ->check(list_in_range(limits::strain()));
   auto* increments = cmd->add_option("--increments", o->increments, "increments per leg")
                          ->capture_default_str()
                          ->transform(whole_number_in(1, limits::kMaxIncrements));

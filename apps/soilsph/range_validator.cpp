@@ -46,4 +46,32 @@ CLI::Validator whole_number_in(long long lo, long long hi) {
       range.describe());
 }
 
+CLI::Validator list_in_range(const Range& range, std::string_view unit) {
+  const CLI::Validator item = in_range(range, unit);
+  return CLI::Validator(
+      [item](std::string& text) -> std::string {
+        std::size_t start = 0;
+        for (;;) {
+          const std::size_t comma = text.find(',', start);
+          std::string value = text.substr(start, comma - start);
+          if (value.empty()) return "an empty item in " + text + " (give numbers separated by single commas)";
+          if (std::string why = item(value); !why.empty()) return why;
+          if (comma == std::string::npos) return "";
+          start = comma + 1;
+        }
+      },
+      "list of " + item.get_description());
+}
+
+std::vector<double> split_numbers(const std::string& list) {
+  std::vector<double> numbers;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = list.find(',', start);
+    numbers.push_back(parse_number(list.substr(start, comma - start)).value());
+    if (comma == std::string::npos) return numbers;
+    start = comma + 1;
+  }
+}
+
 }  // namespace soilsph::cli

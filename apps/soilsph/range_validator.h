@@ -5,6 +5,7 @@
 /// "Value 0 not in range 0.000000 to 1797…(309 digits)". CLI11 prefixes the option's name.
 #include <CLI/CLI.hpp>
 #include <string_view>
+#include <vector>
 
 #include "constitutive/parameters.h"
 
@@ -14,5 +15,10 @@ namespace soilsph::cli {
 CLI::Validator in_range(const Range& range, std::string_view unit = "");
 /// A whole number in [lo, hi], also written as e.g. 1e3.
 CLI::Validator whole_number_in(long long lo, long long hi);
+/// A comma-separated list of numbers, each in `range`. CLI11's own delimiter drops empty items, so
+/// that "0.1,,0.2" would pass as two; this refuses them.
+CLI::Validator list_in_range(const Range& range, std::string_view unit = "");
+/// The numbers of a list that list_in_range accepted.
+std::vector<double> split_numbers(const std::string& list);
 
 }  // namespace soilsph::cli

@@ -12,7 +12,9 @@ ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
   ModifiedCamClayParams p{};
   p.density = t.number("density", Range::positive(), "kg/m^3");
   p.poisson_ratio = t.number("poisson_ratio", Range::open(-1.0, 0.5));
-  p.friction_angle = t.number("friction_angle", Range::open(0.0, 90.0), "degrees");
+  // From 1 degree: below it M < 0.035 and the ellipse degenerates into the p axis (at 1e-299
+  // degrees M^2 underflows and returns end above p_c); no soil's critical state is that smooth.
+  p.friction_angle = t.number("friction_angle", Range::closed_open(1.0, 90.0), "degrees");
   p.compression_index = t.number("compression_index", Range::positive());
   p.swelling_index = t.number("swelling_index", Range::open(0.0, p.compression_index));
   p.initial_void_ratio = t.number("initial_void_ratio", Range::positive());

@@ -123,8 +123,11 @@ TEST_CASE("derived constants that are not finite and positive are rejected, nami
       {replace(kCamClay, "initial_void_ratio = 0.68", "initial_void_ratio = 1e308"),
        "[material] initial_void_ratio = 1e308 gives (1+e0)/(lambda-kappa) (eq 27) = inf, which must be "
        "finite"},
+      // MCC's M = 6 sin(phi)/(3 - sin(phi)) (eq 26) vanishes with phi: refused below 1 degree.
       {replace(kCamClay, "friction_angle = 35.0", "friction_angle = 5e-324"),
-       "[material] friction_angle = 4.94066e-324 gives M = 6 sin(phi)/(3 - sin(phi)) (eq 26) = 0"},
+       "[material] friction_angle = 4.94066e-324 is out of range (allowed: 1 <= value < 90 degrees)"},
+      {replace(kCamClay, "friction_angle = 35.0", "friction_angle = 0.999"),
+       "[material] friction_angle = 0.999 is out of range"},
       // κ/(1+e0) = 1e-310/1.68 is subnormal, so K at the 1 kPa floor is 1e3/6e-311 = inf.
       {replace(kCamClay, "swelling_index = 0.019", "swelling_index = 1e-310"),
        "[material] elastic_pressure_floor = 1000 gives K = p_floor (1+e0)/kappa = inf Pa"},
@@ -134,6 +137,7 @@ TEST_CASE("derived constants that are not finite and positive are rejected, nami
     CHECK_THROWS_WITH(from_text(c.text), Contains(c.message));
     CHECK_THROWS_AS(from_text(c.text), ParameterError);
   }
+  CHECK_NOTHROW(from_text(replace(kCamClay, "friction_angle = 35.0", "friction_angle = 1.0")));
   // The largest values of each range still give usable constants.
   CHECK_NOTHROW(from_text(replace(replace(kDruckerPrager, "young_modulus = 1.0e6", "young_modulus = 1e12"),
                                   "cohesion = 0.0", "cohesion = 1e12")));

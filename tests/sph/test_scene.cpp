@@ -141,6 +141,9 @@ TEST_CASE("a spacing that does not divide the column is an error naming the near
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.003"}),
                     Contains("particle_spacing") && Contains("0.00333333 m and 0.00285714 m"));
   CHECK_NOTHROW(test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.0025"}));  // 16 x 24
+  // The file's spacing refused because --set changed the column: the message names the option.
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.column_height=0.0605"}),
+                    Contains("does not divide the column") && Contains("[with --set scene.column_height=0.0605]"));
 }
 
 TEST_CASE("inputs whose column weight overflows are named as such, not blamed on K0", "[scene]") {

@@ -136,16 +136,19 @@ TEST_CASE("soilsph point states the allowed range of each option in plain number
       {mcc + " --test isotropic --p-initial 1e300", "--p-initial: 1e300 is out of range"},
       {mcc + " --test isotropic --ocr 0.5", "--ocr: 0.5 is out of range (allowed: 1 <= value < 1e6)"},
       {mcc + " --test isotropic --strain-max 1e6",
-       "--strain-max: 1e6 is out of range (allowed: -1 <= value <= 1)"},
+       "--strain-max: 1e6 is out of range (allowed: -1 < value < 1)"},
       {mcc + " --test isotropic --strain-max 0.1,-2", "--strain-max: -2 is out of range"},
+      {mcc + " --test isotropic --strain-max 1", "--strain-max: 1 is out of range"},
+      {mcc + " --test isotropic --strain-max 0.1,,0.2", "--strain-max: an empty item in 0.1,,0.2"},
+      {mcc + " --test isotropic --strain-max 0.1,", "--strain-max: an empty item in 0.1,"},
       {mcc + " --test isotropic --increments 2.5",
        "--increments: 2.5 is not a whole number (allowed: 1 <= value <= 1e6)"},
       {mcc + " --test isotropic --increments 1e7",
        "--increments: 1e7 is out of range (allowed: 1 <= value <= 1e6)"},
       {mcc + " --test strain-path:" + steep.string(),
-       "steep.csv:3: d_xx = -10 is out of range (allowed: -1 <= value <= 1)"},
+       "steep.csv:3: d_xx = -10 is out of range (allowed: -1 < value < 1)"},
       {mcc + " --test strain-path:" + drift.string(),
-       "drift.csv:4: eps_xy accumulated up to this row = 1.2 is out of range (allowed: -1 <= value <= 1)"},
+       "drift.csv:4: eps_xy accumulated up to this row = 1.2 is out of range (allowed: -1 < value < 1)"},
       {mcc + " --test isotropic --set foo.bar=1",
        "--set foo.bar=1: soilsph point reads only the [material] table"},
       {mcc + " --test isotropic --set material.young_modulus=-5",
@@ -169,29 +172,29 @@ TEST_CASE("soilsph point states the allowed range of each option in plain number
 // increment in the user's terms. The expected increments follow from the MCC normal compression line
 // with pressure-dependent elasticity, which the implicit return follows exactly on an isotropic path:
 // p = p0 exp(eps_v (1+e0)/lambda) passes 1e12 Pa from p0 = 100 kPa at
-// eps_v = 0.085/1.68 ln(1e7) = 0.8155, i.e. in increment 9 of 10 to eps_v = 1, and in the third row
+// eps_v = 0.085/1.68 ln(1e7) = 0.8155, i.e. in increment 9 of 10 to eps_v = 0.999, and in the third row
 // of a path adding eps_v = 0.3 per row.
 TEST_CASE("soilsph point names the increment, row and integrator of a run that fails (exit 1)", "[cli]") {
   TempDir dir;
   const fs::path log = dir.path / "log";
   const std::string mcc =
       kSource + "/data/materials/mcc-table1.toml --set material.elasticity=pressure-dependent";
-  CHECK(point(mcc + " --test isotropic --strain-max 1 --increments 10", log) == 1);
+  CHECK(point(mcc + " --test isotropic --strain-max 0.999 --increments 10", log) == 1);
   CHECK(
       read(log).find("mcc-table1.toml (modified-cam-clay, --integrator implicit): increment 9 of 10 of leg 1 "
-                     "(eps_v from 0 to 1): the result has lost meaning: ") != std::string::npos);
+                     "(eps_v from 0 to 0.999): the result has lost meaning: ") != std::string::npos);
   const fs::path path = dir.path / "compress.csv";
   std::ofstream(path) << "d_xx,d_yy,d_zz,d_xy,d_yz,d_xz\n# 0.3 in eps_v per row\n"
                       << "-0.1,-0.1,-0.1,0,0,0\n-0.1,-0.1,-0.1,0,0,0\n-0.1,-0.1,-0.1,0,0,0\n";
   CHECK(point(mcc + " --test strain-path:" + path.string(), log) == 1);
   CHECK(read(log).find("compress.csv:5: the result has lost meaning: ") != std::string::npos);
-  // A 100 % extension in one increment at E = 1e12 Pa: substep's error control gives up and its
+  // A 99.9 % extension in one increment at E = 1e12 Pa: substep's error control gives up and its
   // implicit fallback does not converge either; the message is substep's, not the fallback's.
   const std::string stiff = kSource + "/data/materials/mcc-table1.toml --set material.young_modulus=1e12";
-  CHECK(point(stiff + " --test oedometer --strain-max -1 --increments 1 --integrator substep", log) == 1);
+  CHECK(point(stiff + " --test oedometer --strain-max -0.999 --increments 1 --integrator substep", log) == 1);
   const std::string message = read(log);
   CHECK(message.find(
-            "(modified-cam-clay, --integrator substep): increment 1 of 1 of leg 1 (eps_a from 0 to -1): "
+            "(modified-cam-clay, --integrator substep): increment 1 of 1 of leg 1 (eps_a from 0 to -0.999): "
             "substep: ") != std::string::npos);
   CHECK(std::count(message.begin(), message.end(), '\n') == 1);
 }
