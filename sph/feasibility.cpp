@@ -14,6 +14,14 @@ namespace soilsph::sph {
 namespace {
 /// Lattice points along `length` at `spacing` (as initial_state.cpp builds them), without overflow.
 double points(double length, double spacing) { return std::round(length / spacing) + 1.0; }
+
+/// The material keys that set the P-wave speed, for a refusal caused by a tiny time step.
+std::string wave_speed_keys(const Material& material) {
+  const Elasticity::Kind kind = std::visit([](const auto& m) { return m.elasticity().kind(); }, material);
+  return kind == Elasticity::Kind::Constant
+             ? "[material] young_modulus, poisson_ratio and density"
+             : "[material] swelling_index, initial_void_ratio, poisson_ratio and density at the base pressure";
+}
 }  // namespace
 
 RunEstimate estimate_run(const Scene& scene) {
@@ -68,7 +76,9 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
   if (e.seconds > limit) {
     msg << "the run would take about " << human_duration(e.seconds) << " (" << e.steps << " steps of "
         << e.time_step << " s to [scene] end_time = " << g.end_time << " s with "
-        << static_cast<double>(e.soil_particles + e.boundary_particles) << " particles), more than [scene] max_run_hours = "
+        << static_cast<double>(e.soil_particles + e.boundary_particles)
+        << " particles; the step is [numerics] cfl = " << scene.numerics.cfl << " times h over the P-wave speed c = "
+        << c << " m/s of " << wave_speed_keys(scene.material) << "), more than [scene] max_run_hours = "
         << scene.limits.max_run_hours << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
     refuse(scene, msg.str());
   }

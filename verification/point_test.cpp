@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "constitutive/material_description.h"
 #include "verification/driver/mixed_control.h"
 #include "verification/paths/load_path.h"
 #include "verification/reference/cvode_reference.h"
@@ -146,6 +147,20 @@ LoadPath parse_load_path(std::string_view name) {
 
 std::string_view load_path_name(LoadPath path) {
   return kPathNames[static_cast<int>(path)];
+}
+
+std::string describe_test(const PointTest& test, std::string_view strain_path_file) {
+  std::string loading;
+  if (test.path == LoadPath::StrainPath) {
+    loading = "strain path " + std::string(strain_path_file) + " (" + std::to_string(test.strain_increments.size()) +
+              " rows; one increment each)";
+  } else {
+    loading = std::string(test.path == LoadPath::Isotropic ? "eps_v" : "eps_a") + " targets";
+    for (double target : test.strain_targets) loading += " " + exact_number(target);
+    loading += " (" + std::to_string(test.increments) + " increments each)";
+  }
+  return std::string(load_path_name(test.path)) + "; p_initial = " + exact_number(test.p_initial) +
+         " Pa; ocr = " + exact_number(test.ocr) + "; " + loading;
 }
 
 }  // namespace soilsph::verification

@@ -76,6 +76,10 @@ PointCurve run_point_test(const Material& material, const PointTest& test, std::
 /// eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u (more columns may follow).
 void write_point_csv(std::ostream& out, const PointCurve& curve, std::span<const std::string> comments = {});
 
+/// The test in one line for a CSV's provenance: "PATH; p_initial = ... Pa; ocr = ...; LOADING",
+/// where LOADING is the strain targets with their increments, or `strain_path_file` and its rows.
+std::string describe_test(const PointTest& test, std::string_view strain_path_file = "");
+
 /// "triaxial-drained", "triaxial-undrained", "oedometer", "isotropic", "strain-path";
 /// throws std::invalid_argument otherwise.
 LoadPath parse_load_path(std::string_view name);

@@ -100,15 +100,6 @@ std::vector<std::string> provenance(const PointOptions& o, const verification::P
   using namespace verification;
   const bool reference = o.integrator == kReferenceIntegrator;
   const Material used = reference ? material : with_integrator(material, parse_integrator(o.integrator));
-  std::string loading;
-  if (test.path == LoadPath::StrainPath) {
-    loading = "strain path " + test_and_strain_path(o).second + " (" +
-              std::to_string(test.strain_increments.size()) + " rows; one increment each)";
-  } else {
-    loading = std::string(test.path == LoadPath::Isotropic ? "eps_v" : "eps_a") + " targets";
-    for (double target : test.strain_targets) loading += " " + exact_number(target);
-    loading += " (" + std::to_string(test.increments) + " increments each)";
-  }
   return {
       std::string("soilsph ") + kVersion,
       "command: " + invocation(),
@@ -116,8 +107,7 @@ std::vector<std::string> provenance(const PointOptions& o, const verification::P
           describe_material(used),
       "integrator: " + o.integrator +
           (reference ? " (the CVODE reference; the material's integrator key is not used)" : ""),
-      "test: " + std::string(load_path_name(test.path)) + "; p_initial = " + exact_number(test.p_initial) +
-          " Pa; ocr = " + exact_number(test.ocr) + "; " + loading,
+      "test: " + describe_test(test, test_and_strain_path(o).second),
   };
 }
 

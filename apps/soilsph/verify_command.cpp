@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
+#include "soilsph/version.h"
 #include "verification/report/report_writer.h"
 
 namespace soilsph::cli {
@@ -38,7 +39,8 @@ void run(const VerifyOptions& o) {
                 << (run.failure.empty() ? "" : ": " + run.failure) << '\n';
     }
   }
-  write_report(o.out, results);
+  const std::vector<std::string> provenance = {std::string("soilsph ") + kVersion, "command: " + invocation()};
+  write_report(o.out, results, provenance);
   std::cout << "report: " << (std::filesystem::path(o.out) / "report.md").string() << '\n';
   if (o.plots) {
     const std::string command = quoted(o.python) + " " +

@@ -193,7 +193,10 @@ std::string command_line(const std::string& executable, const Case& c, const fs:
 
 Config Config::from_environment(std::string executable, std::string source_dir, fs::path default_work_dir) {
   Config c;
-  c.executable = std::move(executable);
+  // A frozen copy for a long run, so that rebuilding meanwhile (an LTO link removes the executable
+  // for minutes) cannot turn cases into exec failures.
+  const char* frozen = std::getenv("SOILSPH_FUZZ_EXECUTABLE");
+  c.executable = frozen && *frozen ? std::string(frozen) : std::move(executable);
   c.source_dir = std::move(source_dir);
   const char* dir = std::getenv("SOILSPH_FUZZ_DIR");
   c.work_dir = dir && *dir ? fs::path(dir) : default_work_dir;

@@ -1,6 +1,8 @@
 #include "verification/report/report_writer.h"
 
 #include "verification/closed_form/cam_clay_compression.h"
+#include "constitutive/integrators/integrator.h"
+#include "constitutive/material_description.h"
 
 #include <fstream>
 #include <iomanip>
@@ -30,10 +32,12 @@ std::string errors_cells(const std::optional<CurveErrors>& e) {
   return scientific(e->q) + " | " + scientific(e->p) + " | " + scientific(e->eps_v);
 }
 
-void write_closed_form_csv(const fs::path& path, const std::vector<ReferencePoint>& points) {
+void write_closed_form_csv(const fs::path& path, const std::vector<ReferencePoint>& points,
+                           std::span<const std::string> comments) {
   std::ofstream out = open(path);
-  out << "# soilsph verify: closed-form reference; compression-positive, SI (strains -, stresses Pa)\n"
-      << "eps_a,eps_v,p,q,p_c\n"
+  out << "# soilsph verify: closed-form reference; compression-positive, SI (strains -, stresses Pa)\n";
+  for (const std::string& line : comments) out << "# " << line << '\n';
+  out << "eps_a,eps_v,p,q,p_c\n"
       << std::setprecision(std::numeric_limits<double>::max_digits10);
   for (const ReferencePoint& r : points)
     out << r.eps_a << ',' << r.eps_v << ',' << r.p << ',' << r.q << ',' << r.p_c << '\n';
@@ -118,24 +122,33 @@ void write_markdown(const fs::path& path, const std::vector<CaseResult>& results
 }
 }  // namespace
 
-void write_report(const fs::path& folder, const std::vector<CaseResult>& results) {
+void write_report(const fs::path& folder, const std::vector<CaseResult>& results,
+                  std::span<const std::string> provenance) {
   fs::create_directories(folder / "csv");
   for (const CaseResult& r : results) {
-    for (const IntegratorRun& run : r.runs) {
-      if (run.curve.empty()) continue;
-      std::ofstream out = open(folder / "csv" / (r.spec->name + "." + run.integrator + ".csv"));
-      write_point_csv(out, run.curve);
-    }
+    std::vector<std::string> case_lines(provenance.begin(), provenance.end());
+    case_lines.push_back("case: " + r.spec->name + " of " + r.spec->source);
+    const auto write_curve = [&](std::string_view integrator, const PointCurve& curve) {
+      const bool reference = integrator == kReferenceIntegrator;
+      const Material used =
+          reference ? r.spec->material : with_integrator(r.spec->material, parse_integrator(integrator));
+      std::vector<std::string> comments = case_lines;
+      comments.push_back("material: " + r.spec->material_file + ": " + describe_material(used));
+      comments.push_back("integrator: " + std::string(integrator) +
+                         (reference ? " (the CVODE reference; the material's integrator key is not used)" : ""));
+      comments.push_back("test: " + describe_test(r.spec->test));
+      std::ofstream out = open(folder / "csv" / (r.spec->name + "." + std::string(integrator) + ".csv"));
+      write_point_csv(out, curve, comments);
+    };
+    for (const IntegratorRun& run : r.runs)
+      if (!run.curve.empty()) write_curve(run.integrator, run.curve);
     if (!r.reference.empty() &&
         r.runs.end() == std::find_if(r.runs.begin(), r.runs.end(), [](const IntegratorRun& x) {
           return x.integrator == kReferenceIntegrator;
-        })) {
-      std::ofstream out =
-          open(folder / "csv" / (r.spec->name + "." + std::string(kReferenceIntegrator) + ".csv"));
-      write_point_csv(out, r.reference);
-    }
+        }))
+      write_curve(kReferenceIntegrator, r.reference);
     if (!r.closed_form.empty())
-      write_closed_form_csv(folder / "csv" / (r.spec->name + ".closed-form.csv"), r.closed_form);
+      write_closed_form_csv(folder / "csv" / (r.spec->name + ".closed-form.csv"), r.closed_form, case_lines);
   }
   write_manifest(folder / "cases.json", results);
   write_markdown(folder / "report.md", results);
