@@ -237,4 +237,10 @@ void apply_override(toml::table& root, std::string_view assignment) {
   table->insert_or_assign(key, std::move(*parsed.get("v")));
 }
 
+std::string overrides_note(std::span<const std::string> overrides) {
+  std::string list;
+  for (const std::string& assignment : overrides) list += (list.empty() ? "" : ", ") + assignment;
+  return list.empty() ? "" : " [with --set " + list + "]";
+}
+
 }  // namespace soilsph

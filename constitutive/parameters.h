@@ -122,4 +122,23 @@ inline constexpr std::string_view kOverridePrefix = "--set ";
 /// option, not the file.
 void apply_override(toml::table& root, std::string_view assignment);
 
+/// " [with --set a=1, b=2]" for the overrides applied, or "" without any: appended to a refusal
+/// that names a file's key, since one of the options may be what made it wrong (a model switched
+/// with --set leaves the file's keys short, a column height set with --set no longer fits the
+/// file's spacing).
+std::string overrides_note(std::span<const std::string> overrides);
+
+/// read() (reading inputs that `overrides` changed); a ParameterError that does not already name
+/// its --set option gets overrides_note appended.
+template <class Read>
+auto blaming_overrides(std::span<const std::string> overrides, Read&& read) {
+  try {
+    return read();
+  } catch (const ParameterError& e) {
+    const std::string what = e.what();
+    if (overrides.empty() || what.starts_with(kOverridePrefix)) throw;
+    throw ParameterError(what + overrides_note(overrides));
+  }
+}
+
 }  // namespace soilsph

@@ -55,15 +55,16 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
   const Geometry& g = scene.geometry;
   std::ostringstream msg;
   if (!(e.time_step > 0.0) || !std::isfinite(e.time_step)) {
-    msg << "the time step " << e.time_step << " s is not finite and positive (check the material's stiffness)";
+    msg << "the time step " << e.time_step << " s is not finite and positive (the P-wave speed c = " << e.sound_speed
+        << " m/s of " << wave_speed_keys(scene.material) << ")";
     refuse(scene, msg.str());
   }
   const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity * g.column_height);
   if (c <= free_fall) {
     msg << "the soil is too soft to carry its own weight: its P-wave speed c = " << c
         << " m/s is below the free-fall speed sqrt(2 g H) = " << free_fall
-        << " m/s, where the weakly compressible scheme needs |v| << c (raise [material] young_modulus, or lower "
-           "[scene] gravity or column_height)";
+        << " m/s, where the weakly compressible scheme needs |v| << c (c from " << wave_speed_keys(scene.material)
+        << "; a stiffer or lighter soil, or a lower [scene] gravity or column_height)";
     refuse(scene, msg.str());
   }
   if (e.memory_bytes > memory_available) {
@@ -76,8 +77,8 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
   if (e.seconds > limit) {
     msg << "the run would take about " << human_duration(e.seconds) << " (" << e.steps << " steps of "
         << e.time_step << " s to [scene] end_time = " << g.end_time << " s with "
-        << static_cast<double>(e.soil_particles + e.boundary_particles)
-        << " particles; the step is [numerics] cfl = " << scene.numerics.cfl << " times h over the P-wave speed c = "
+        << static_cast<double>(e.soil_particles) << " soil and " << static_cast<double>(e.boundary_particles)
+        << " boundary particles from [scene] particle_spacing, column_width, column_height and floor_length; the step is [numerics] cfl = " << scene.numerics.cfl << " times h over the P-wave speed c = "
         << c << " m/s of " << wave_speed_keys(scene.material) << "), more than [scene] max_run_hours = "
         << scene.limits.max_run_hours << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
     refuse(scene, msg.str());

@@ -1,5 +1,7 @@
 #include "sph/scene.h"
 
+#include "constitutive/material_limits.h"
+
 #include "sph/initial_state.h"
 
 #include <algorithm>
@@ -99,7 +101,7 @@ InitialConditions read_initial(const TableReader& t, const Material& material, c
   c.lateral_stress_ratio = t.number_or("lateral_stress_ratio", std::max(elastic, bound),
                                        bound > 0.0 ? Range::closed_open(bound, 1.0) : Range::open(0.0, 1.0));
   c.overconsolidation_ratio = t.number_or("overconsolidation_ratio", 1.0, Range::closed_open(1.0, 1e3));
-  c.preconsolidation_floor = t.number_or("preconsolidation_floor", 100.0, Range::positive(), "Pa");
+  c.preconsolidation_floor = t.number_or("preconsolidation_floor", 100.0, limits::stress_range(), "Pa");
   return c;
 }
 
@@ -170,28 +172,14 @@ Scene read_scene(const toml::table& root, const std::string& source) {
 }
 
 namespace {
-/// Reads `root` after the overrides. A key of the file refused because of another key that --set
-/// changed (a spacing that no longer divides a column height set with --set) must name the option:
-/// such a refusal lists the options applied.
+/// Reads `root` after the overrides; a refusal of the file's keys lists the options applied.
 Scene read_overridden(toml::table& root, const std::string& source, std::span<const std::string> overrides) {
   for (const std::string& assignment : overrides) apply_override(root, assignment);
-  try {
-    Scene scene = read_scene(root, source);
-    scene.overrides.assign(overrides.begin(), overrides.end());
-    return scene;
-  } catch (const ParameterError& e) {
-    const std::string what = e.what();
-    if (what.starts_with(kOverridePrefix)) throw;  // already names its option
-    throw ParameterError(what + overrides_note(overrides));
-  }
+  Scene scene = blaming_overrides(overrides, [&] { return read_scene(root, source); });
+  scene.overrides.assign(overrides.begin(), overrides.end());
+  return scene;
 }
 }  // namespace
-
-std::string overrides_note(std::span<const std::string> overrides) {
-  std::string list;
-  for (const std::string& assignment : overrides) list += (list.empty() ? "" : ", ") + assignment;
-  return list.empty() ? "" : " [with --set " + list + "]";
-}
 
 Scene load_scene(const std::string& path, std::span<const std::string> overrides) {
   toml::table root = parse_toml_file(path);

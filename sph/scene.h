@@ -83,10 +83,6 @@ Scene load_scene(const std::string& path, std::span<const std::string> overrides
 /// The same from TOML text (a checkpoint's scene); `source` names it in errors.
 Scene parse_scene(const std::string& text, const std::string& source, std::span<const std::string> overrides = {});
 
-/// " [with --set a=1, b=2]" for the overrides applied, or "" without any: appended to a refusal
-/// that names a file's key, since one of the options may be what made it wrong.
-std::string overrides_note(std::span<const std::string> overrides);
-
 /// The scene as run (Scene::resolved) as TOML text, which reads back to the same scene.
 std::string scene_toml(const Scene& scene);
 /// The same as a JSON object (summary.json's "inputs").

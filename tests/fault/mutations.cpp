@@ -460,7 +460,7 @@ std::vector<Spec> make_specs() {
                {},
                fixed(closed_open(1, 1e3))});
   s.push_back(
-      {"initial", "preconsolidation_floor", Type::Number, false, {"0", "1e-300", "1e308"}, {}, {}, positive});
+      {"initial", "preconsolidation_floor", Type::Number, false, {"0", "1e-300", "1e308", "1e12"}, {}, {}, fixed(open_closed(0, 1e12))});
   // [numerics]
   s.push_back({"numerics",
                "artificial_viscosity_alpha",
