@@ -58,11 +58,13 @@ struct PointTest {
 /// One row per increment including the initial state; compression-positive, SI.
 /// eps_q = 2/3 (eps_a − eps_r); q = √(3 J2) with the sign of sig_a − sig_r (so q = sig_a − sig_r
 /// on axisymmetric states, negative in triaxial extension); p_c = 0 for models without one;
-/// u = undrained excess pore pressure (radial total stress constant), 0 on drained paths.
+/// u = excess pore pressure of undrained legs, 0 on drained ones; tau_xy = −σ_xy and
+/// gamma_xy = −2 ε_xy (the shear components of the compression-positive tensors).
 struct PointRecord {
-  double eps_a, eps_r, eps_v, eps_q, sig_a, sig_r, p, q, p_c, u;
+  double eps_a, eps_r, eps_v, eps_q, sig_a, sig_r, p, q, p_c, u, tau_xy, gamma_xy;
 };
 using PointCurve = std::vector<PointRecord>;
+
 
 /// `integrator` is "cvode" (the reference) or any name accepted by parse_integrator().
 /// Throws std::invalid_argument for an invalid test (outside point_limits) or integrator name, and

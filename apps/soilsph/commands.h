@@ -24,9 +24,6 @@ void add_bench_command(CLI::App& app);
 /// `soilsph bench collapse`, registered by add_bench_command on the `bench` subcommand.
 void add_bench_collapse_command(CLI::App& bench);
 
-/// `soilsph point`'s integrator when --integrator is not given.
-inline constexpr std::string_view kDefaultPointIntegrator =
-    "implicit";  // best accuracy for cost (docs/integrators.md)
 void add_point_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
 void add_collapse_command(CLI::App& app);

@@ -1,6 +1,7 @@
 // `soilsph point MATERIAL.toml --test NAME ...`: one material-point test (triaxial, oedometer,
-// isotropic or a strain-path file) written as a compression-positive CSV whose comment header
-// records what produced it.
+// isotropic or a strain-path file), or `soilsph point PROGRAMME.toml`: a laboratory programme
+// (verification/programme/programme_file.h); written as a compression-positive CSV whose comment
+// header records what produced it.
 #include <fstream>
 #include <iostream>
 
@@ -11,6 +12,7 @@
 #include "soilsph/version.h"
 #include "verification/paths/strain_path_csv.h"
 #include "verification/point_test.h"
+#include "verification/programme/programme_file.h"
 
 namespace soilsph::cli {
 
@@ -19,13 +21,13 @@ namespace limits = verification::point_limits;
 
 struct PointOptions {
   std::string material_path;
-  std::string test = "triaxial-drained";
+  std::string test;  ///< required unless the file is a programme
   std::string strain_path;
   double p_initial = 100e3;
   double ocr = 1.0;
   std::string strain_max = "0.1";  ///< comma-separated targets, checked by list_in_range
   int increments = 100;
-  std::string integrator{kDefaultPointIntegrator};
+  std::string integrator;  ///< empty: the material's `integrator` key
   std::string out;
   std::vector<std::string> overrides;
 };
@@ -42,7 +44,7 @@ Material load_point_material(const PointOptions& o) {
   }
   const toml::table* table = root["material"].as_table();
   if (!table) throw ParameterError(o.material_path + ": no [material] table");
-  return read_material(TableReader(*table, o.material_path, "material"));
+  return blaming_overrides(o.overrides, [&] { return read_material(TableReader(*table, o.material_path, "material")); });
 }
 
 /// --test and --strain-path resolved: `--test strain-path:FILE` is a shorthand for
@@ -82,8 +84,27 @@ verification::PointTest point_test(const PointOptions& o, bool legs_given) {
   return test;
 }
 
-/// The integrator that runs: a scheme (which replaces the material's `integrator` key) or cvode.
+/// The integrator that runs: --integrator (a scheme, which replaces the material's key, or cvode),
+/// else the material's `integrator` key.
+std::string integrator_to_run(const PointOptions& o, const Material& material) {
+  if (!o.integrator.empty()) return o.integrator;
+  return std::visit(
+      [](const auto& model) -> std::string {
+        if constexpr (requires { model.integrator(); })
+          return std::string(integrator_name(model.integrator()));
+        else
+          return "implicit";  // linear elasticity: every scheme is the elastic update
+      },
+      material);
+}
+
+/// How messages and the CSV name the integrator: the option, or the material's key.
+std::string integrator_label(const PointOptions& o, const std::string& integrator) {
+  return o.integrator.empty() ? "integrator " + integrator + " (the material's)" : "--integrator " + integrator;
+}
+
 void check_integrator(const std::string& name) {
+  if (name.empty()) return;
   std::string allowed;
   for (std::string_view scheme : kIntegratorNames) {
     if (name == scheme) return;
@@ -95,19 +116,21 @@ void check_integrator(const std::string& name) {
 }
 
 /// The comment lines after the conventions line: what produced the curve, enough to run it again.
-std::vector<std::string> provenance(const PointOptions& o, const verification::PointTest& test,
-                                    const Material& material) {
+/// `material_source` is the material's file; `test` the test or programme in words.
+std::vector<std::string> provenance(const PointOptions& o, const std::string& material_source,
+                                    const Material& material, const std::string& integrator,
+                                    const std::string& test) {
   using namespace verification;
-  const bool reference = o.integrator == kReferenceIntegrator;
-  const Material used = reference ? material : with_integrator(material, parse_integrator(o.integrator));
+  const bool reference = integrator == kReferenceIntegrator;
+  const Material used = reference ? material : with_integrator(material, parse_integrator(integrator));
   return {
       std::string("soilsph ") + kVersion,
       "command: " + invocation(),
-      "material: " + o.material_path + (o.overrides.empty() ? "" : " with --set") + ": " +
-          describe_material(used),
-      "integrator: " + o.integrator +
-          (reference ? " (the CVODE reference; the material's integrator key is not used)" : ""),
-      "test: " + describe_test(test, test_and_strain_path(o).second),
+      "material: " + material_source + (o.overrides.empty() ? "" : " with --set") + ": " + describe_material(used),
+      "integrator: " + integrator +
+          (reference ? " (the CVODE reference; the material's integrator key is not used)"
+                     : o.integrator.empty() ? " (the material's integrator key)" : ""),
+      test,
   };
 }
 
@@ -124,48 +147,82 @@ void write(const PointOptions& o, const verification::PointCurve& curve,
   if (!file) throw std::runtime_error(o.out + ": write failed");
 }
 
-void run(const PointOptions& o, bool legs_given) {
-  check_integrator(o.integrator);
-  const verification::PointTest test = point_test(o, legs_given);
-  const Material material = load_point_material(o);
-  if (test.ocr != 1.0 && !std::holds_alternative<ModifiedCamClay>(material))
-    throw ParameterError("--ocr " + format_number(test.ocr) + ": OCR applies to modified-cam-clay only (" +
-                         std::string(model_name(material)) + " has no preconsolidation pressure)");
-  verification::PointCurve curve;
+/// Runs `programme`, turning its failures into the command's errors: input errors (exit 2) and
+/// run failures naming the material, model and integrator (exit 1).
+verification::PointCurve run_checked(const PointOptions& o, const Material& material, const std::string& source,
+                                     const verification::Programme& programme, const std::string& integrator) {
   try {
-    curve = verification::run_point_test(material, test, o.integrator);
+    return verification::run_programme(material, programme, integrator);
   } catch (const ParameterError&) {
     throw;
   } catch (const std::invalid_argument& e) {  // the test's inputs: out of range, a leg of zero length
     throw ParameterError(e.what());
   } catch (const std::runtime_error& e) {  // a run that failed or lost meaning, at the named increment
-    throw std::runtime_error(o.material_path + " (" + std::string(model_name(material)) + ", --integrator " +
-                             o.integrator + "): " + e.what());
+    throw std::runtime_error(source + " (" + std::string(model_name(material)) + ", " +
+                             integrator_label(o, integrator) + "): " + e.what());
   }
-  write(o, curve, provenance(o, test, material));
+}
+
+void run_programme_file(const PointOptions& o, bool options_given) {
+  if (options_given)
+    throw ParameterError(o.material_path +
+                         " is a programme: --test, --strain-path, --p-initial, --ocr, --strain-max and --increments "
+                         "do not apply (its [initial] table and [[leg]] tables say it all)");
+  const verification::ProgrammeFile file = verification::read_programme_file(o.material_path, o.overrides);
+  const std::string integrator = integrator_to_run(o, file.material);
+  const verification::PointCurve curve = run_checked(o, file.material, o.material_path, file.programme, integrator);
+  write(o, curve,
+        provenance(o, file.material_source, file.material, integrator, "programme: " + file.description));
+}
+
+void run(const PointOptions& o, bool legs_given, bool test_options_given) {
+  check_integrator(o.integrator);
+  if (verification::is_programme_file(o.material_path)) return run_programme_file(o, legs_given || test_options_given);
+  if (o.test.empty()) throw ParameterError("--test is required (or give a programme file, see docs/programmes.md)");
+  const verification::PointTest test = point_test(o, legs_given);
+  const Material material = load_point_material(o);
+  if (test.ocr != 1.0 && !std::holds_alternative<ModifiedCamClay>(material))
+    throw ParameterError("--ocr " + format_number(test.ocr) + ": OCR applies to modified-cam-clay only (" +
+                         std::string(model_name(material)) + " has no preconsolidation pressure)");
+  const std::string integrator = integrator_to_run(o, material);
+  verification::Programme programme;
+  try {
+    programme = verification::programme_of(material, test);
+  } catch (const std::invalid_argument& e) {
+    // The options' own ranges are checked by CLI11; what is left is a strain path's row (which
+    // names its file and line) or the targets together (a leg of zero length).
+    if (test.path == verification::LoadPath::StrainPath) throw ParameterError(e.what());
+    throw ParameterError("--strain-max " + o.strain_max + ": " + e.what());
+  }
+  const verification::PointCurve curve = run_checked(o, material, o.material_path, programme, integrator);
+  write(o, curve,
+        provenance(o, o.material_path, material, integrator,
+                   "test: " + describe_test(test, test_and_strain_path(o).second)));
 }
 
 }  // namespace
 
 void add_point_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "point", "Run a material-point test (triaxial, oedometer, isotropic, strain path) and write its CSV");
+      "point",
+      "Run a material-point test (triaxial, oedometer, isotropic, strain path) or a programme file; write its CSV");
   auto o = std::make_shared<PointOptions>();
-  cmd->add_option("MATERIAL", o->material_path, "TOML file with a [material] table (a scene file works too)")
+  cmd->add_option("FILE", o->material_path,
+                  "a programme file ([initial] and [[leg]] tables, docs/programmes.md), or a TOML file with a "
+                  "[material] table (a scene file works too) run with --test")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--test", o->test,
-                  "triaxial-drained, triaxial-undrained, oedometer, isotropic, or strain-path "
-                  "(with --strain-path FILE, or as strain-path:FILE)")
-      ->required();
-  cmd->add_option("--strain-path", o->strain_path,
+  auto* test = cmd->add_option("--test", o->test,
+                               "triaxial-drained, triaxial-undrained, oedometer, isotropic, or strain-path "
+                               "(with --strain-path FILE, or as strain-path:FILE); not with a programme");
+  auto* strain_path = cmd->add_option("--strain-path", o->strain_path,
                   "CSV of strain increments d_xx,d_yy,d_zz,d_xy,d_yz,d_xz (tension-positive), one per row")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--p-initial", o->p_initial,
+  auto* p_initial = cmd->add_option("--p-initial", o->p_initial,
                   "initial isotropic effective stress, Pa (compression-positive)")
       ->capture_default_str()
       ->check(in_range(limits::p_initial(), "Pa"));
-  cmd->add_option("--ocr", o->ocr, "overconsolidation ratio, MCC p_c0 = OCR * p_initial (MCC only)")
+  auto* ocr = cmd->add_option("--ocr", o->ocr, "overconsolidation ratio, MCC p_c0 = OCR * p_initial (MCC only)")
       ->capture_default_str()
       ->check(in_range(limits::ocr()));
   auto* strain_max = cmd->add_option("--strain-max", o->strain_max,
@@ -179,12 +236,15 @@ void add_point_command(CLI::App& app) {
   std::string integrators;
   for (std::string_view name : kIntegratorNames) integrators += std::string(name) + ", ";
   cmd->add_option("--integrator", o->integrator,
-                  "stress integrator: " + integrators + "or cvode (the reference); replaces the material's")
-      ->capture_default_str();
+                  "stress integrator: " + integrators +
+                      "or cvode (the reference); replaces the material's (default: the material's integrator key)");
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,
                   "override a material key, e.g. --set material.friction_angle=30 (repeatable)");
-  cmd->callback([o, strain_max, increments] { run(*o, strain_max->count() + increments->count() > 0); });
+  cmd->callback([o, strain_max, increments, test, strain_path, p_initial, ocr] {
+    run(*o, strain_max->count() + increments->count() > 0,
+        test->count() + strain_path->count() + p_initial->count() + ocr->count() > 0);
+  });
 }
 
 }  // namespace soilsph::cli

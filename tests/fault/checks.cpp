@@ -211,31 +211,32 @@ void check_point_output(const Case& c, const fs::path& dir, const Outcome& o, st
   // the column names: keep the first comment and drop the others.
   while (lines.size() > 2 && lines[1].starts_with("#")) lines.erase(lines.begin() + 1);
   if (lines.size() < 2 || !lines[0].starts_with("# soilsph point") ||
-      lines[1] != "eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u") {
+      lines[1] != "eps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u,tau_xy,gamma_xy") {
     f.push_back({"point-output", "stdout is not the point CSV (comment, then eps_a,...,u): \"" +
                                      (lines.empty() ? std::string() : lines[0].substr(0, 80)) + "\""});
     return;
   }
-  enum { eps_a, eps_r, eps_v, eps_q, sig_a, sig_r, p, q, p_c, u };
-  static const char* names[] = {"eps_a", "eps_r", "eps_v", "eps_q", "sig_a", "sig_r", "p", "q", "p_c", "u"};
-  std::vector<std::array<double, 10>> rows;
+  enum { eps_a, eps_r, eps_v, eps_q, sig_a, sig_r, p, q, p_c, u, tau_xy, gamma_xy, kColumns };
+  static const char* names[] = {"eps_a", "eps_r", "eps_v", "eps_q", "sig_a",  "sig_r",
+                                "p",     "q",     "p_c",   "u",     "tau_xy", "gamma_xy"};
+  std::vector<std::array<double, kColumns>> rows;
   for (std::size_t i = 2; i < lines.size(); ++i) {
-    std::array<double, 10> r{};
+    std::array<double, kColumns> r{};
     std::stringstream s(lines[i]);
     std::string cell;
     int k = 0;
     bool ok = true;
     for (; std::getline(s, cell, ','); ++k) {
       const std::optional<double> x = to_number(cell);
-      if (k >= 10 || !x) {
+      if (k >= kColumns || !x) {
         ok = false;
         break;
       }
       r[k] = *x;
     }
-    if (!ok || k != 10) {
-      f.push_back(
-          {"point-output", "row " + std::to_string(i - 1) + " is not 10 numbers: \"" + lines[i] + "\""});
+    if (!ok || k != kColumns) {
+      f.push_back({"point-output", "row " + std::to_string(i - 1) + " is not " + std::to_string(kColumns) +
+                                       " numbers: \"" + lines[i] + "\""});
       return;
     }
     for (int j = 0; j < 10; ++j) {

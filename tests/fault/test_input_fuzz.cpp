@@ -92,15 +92,15 @@ TEST_CASE("fuzz harness: the output checks catch silent wrong results", "[fuzz][
   point.test = "triaxial-undrained";
   point.increments = 1;
   const std::string head =
-      "# soilsph point: x\neps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u\n"
-      "0,0,0,0,100000,100000,100000,0,0,0\n";
+      "# soilsph point: x\neps_a,eps_r,eps_v,eps_q,sig_a,sig_r,p,q,p_c,u,tau_xy,gamma_xy\n"
+      "0,0,0,0,100000,100000,100000,0,0,0,0,0\n";
   o.out = head +
           "0.1,-0.05,0,0.1,162873.12639873853,68563.436800630734,100000,94309.689598107798,0,31436."
-          "563199369266\n";
+          "563199369266,0,0\n";
   CHECK(categories(point, o).empty());
-  o.out = head + "0.1,-0.05,0,0.1,-0,-0,-0,0,0,100000\n";  // D-P without dilatancy: p' must stay
+  o.out = head + "0.1,-0.05,0,0.1,-0,-0,-0,0,0,100000,0,0\n";  // D-P without dilatancy: p' must stay
   CHECK(categories(point, o) == "point-output ");
-  o.out = head + "0.1,-0.05,0,0.1,nan,68563,100000,94310,0,31437\n";
+  o.out = head + "0.1,-0.05,0,0.1,nan,68563,100000,94310,0,31437,0,0\n";
   CHECK(categories(point, o) == "point-output ");
   o.out = head;  // a row short
   CHECK(categories(point, o) == "point-output ");

@@ -18,7 +18,7 @@ scope = {"np": np, "pd": pd if library == "pandas" else None}
 exec(lines[0].replace('"curve.csv"', repr(csv)), scope)
 data = scope["data"]
 
-columns = ["eps_a", "eps_r", "eps_v", "eps_q", "sig_a", "sig_r", "p", "q", "p_c", "u"]
+columns = ["eps_a", "eps_r", "eps_v", "eps_q", "sig_a", "sig_r", "p", "q", "p_c", "u", "tau_xy", "gamma_xy"]
 names = list(data.dtype.names) if library == "numpy" else list(data.columns)
 assert names == columns, names
 eps_a = np.asarray(data["eps_a"], dtype=float)

@@ -4,6 +4,8 @@
 /// its strain or its stress imposed (paths/load_path.h). Each increment solves for the free strain
 /// components by Newton's method on the imposed stresses,
 ///   r(Δε_f) = σ_f(σ_n, Δε_i, Δε_f) − σ_f*,   Δε_f ← Δε_f − T_ff⁻¹ r,
+/// and on an undrained leg also for the pore pressure u, with σ_f* total stresses and the volume
+/// held (mixed_control_algebra.h: r = σ'_f − u m_f − σ_f*, bordered by m · Δε = 0),
 /// with T the algorithmic tangent of one update (constitutive/tangent.h: the model's consistent
 /// tangent, else central differences), until ‖r‖∞ ≤ tolerance · max(‖σ_f*‖∞, 10⁻³ ‖σ‖∞) (relative to
 /// the imposed stresses; the floor covers imposed zero stresses). The first guess is the elastic
@@ -33,14 +35,16 @@ namespace detail {
 /// an infinite residual, so that damped Newton backs off from it.
 struct Trial {
   State state;
+  double pore_pressure = 0.0;
   Vec6 residual = Vec6::Zero();
   double norm = 0.0;
 };
 
 template <class Model>
 Trial evaluate(const Model& model, const State& state, const Partition& part, const Vec6& target,
-               const Vec6& strain_increment, std::string& update_error) {
+               const Vec6& strain_increment, double pore_pressure, std::string& update_error) {
   Trial t;
+  t.pore_pressure = pore_pressure;
   try {
     t.state = model.update(state, strain_from_voigt(strain_increment), Mat3::Zero());
   } catch (const std::runtime_error& e) {
@@ -50,7 +54,8 @@ Trial evaluate(const Model& model, const State& state, const Partition& part, co
   }
   const Vec6 sigma = stress_to_voigt(t.state.stress);
   for (int a = 0; a < part.n_free; ++a) {
-    t.residual(part.free[a]) = sigma(part.free[a]) - target(part.free[a]);
+    const int k = part.free[a];
+    t.residual(k) = sigma(k) - pore_pressure * voigt_identity(k) - target(k);
     t.norm = std::max(t.norm, std::abs(t.residual(part.free[a])));
   }
   // std::max drops a NaN, so a non-finite trial (e.g. from a singular tangent solve) must be
@@ -60,16 +65,18 @@ Trial evaluate(const Model& model, const State& state, const Partition& part, co
 }
 
 /// Newton from the elastic guess; with `damped`, each step is halved until the residual decreases.
+/// `pore_pressure` is u at the start of the increment (0 when drained).
 template <class Model>
-std::optional<Trial> solve_increment(const Model& model, const State& state, const Partition& part,
-                                     const Leg& leg, const Vec6& target, Vec6& strain_increment,
-                                     const MixedControlOptions& options, bool damped,
+std::optional<Trial> solve_increment(const Model& model, const State& state, double pore_pressure,
+                                     const Partition& part, const Leg& leg, const Vec6& target,
+                                     Vec6& strain_increment, const MixedControlOptions& options, bool damped,
                                      std::string& update_error) {
-  const Vec6 sigma_n = stress_to_voigt(state.stress);
+  Vec6 total_n = stress_to_voigt(state.stress);
+  total_n.head<3>().array() -= pore_pressure;
   strain_increment = leg.increment;
-  solve_free(voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part, target - sigma_n,
-             strain_increment);
-  Trial trial = evaluate(model, state, part, target, strain_increment, update_error);
+  const double du = solve_free(voigt_stiffness(model.elasticity().at(mean_pressure(state.stress))), part,
+                               target - total_n, strain_increment);
+  Trial trial = evaluate(model, state, part, target, strain_increment, pore_pressure + du, update_error);
   double imposed_scale = 0.0;
   for (int a = 0; a < part.n_free; ++a)
     imposed_scale = std::max(imposed_scale, std::abs(target(part.free[a])));
@@ -81,10 +88,11 @@ std::optional<Trial> solve_increment(const Model& model, const State& state, con
     // Newton: T_ff δ_f = −r_f with the strain-imposed entries held (δ_i = 0).
     const Mat6 tangent = algorithmic_tangent(model, state, strain_from_voigt(strain_increment));
     Vec6 correction = Vec6::Zero();
-    solve_free(tangent, part, -trial.residual, correction);
+    const double du_correction = solve_free(tangent, part, -trial.residual, correction);
     double step = 1.0;
     for (int halving = 0;; ++halving, step *= 0.5) {
-      Trial next = evaluate(model, state, part, target, strain_increment + step * correction, update_error);
+      Trial next = evaluate(model, state, part, target, strain_increment + step * correction,
+                            trial.pore_pressure + step * du_correction, update_error);
       if (!damped || next.norm < trial.norm || halving == kMaxHalvings) {
         strain_increment += step * correction;
         trial = std::move(next);
@@ -96,8 +104,9 @@ std::optional<Trial> solve_increment(const Model& model, const State& state, con
 }  // namespace detail
 
 /// One increment of `leg` from `state` to the imposed stresses `target` (Voigt; only the
-/// stress-imposed entries are used): returns the new state and sets `strain_increment` (Voigt,
-/// engineering shears) to the imposed and solved components. Plain Newton first; if it fails,
+/// stress-imposed entries are used; total stresses on an undrained leg): returns the new state and
+/// sets `strain_increment` (Voigt, engineering shears) to the imposed and solved components, and
+/// `pore_pressure` from u at the start to u at the end. Plain Newton first; if it fails,
 /// Newton damped by backtracking, because a discrete update need not be smooth (with large
 /// increments the explicit scheme's residual has kinks and several branches). If both fail, the
 /// increment is done as two halves, recursively up to `options.max_splits` times (a coarse
@@ -105,8 +114,8 @@ std::optional<Trial> solve_increment(const Model& model, const State& state, con
 /// vanishes). Throws std::runtime_error if even the smallest pieces fail.
 template <class Model>
 State mixed_control_increment(const Model& model, const State& state, const Leg& leg, const Vec6& target,
-                              Vec6& strain_increment, const MixedControlOptions& options = {},
-                              int splits = 0) {
+                              Vec6& strain_increment, double& pore_pressure,
+                              const MixedControlOptions& options = {}, int splits = 0) {
   const Partition part(leg);
   if (part.n_free == 0) {  // strain control: one update, whose errors propagate as they are
     strain_increment = leg.increment;
@@ -114,18 +123,22 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
   }
   std::string update_error;
   for (bool damped : {false, true}) {
-    if (auto solved = detail::solve_increment(model, state, part, leg, target, strain_increment, options,
-                                              damped, update_error))
+    if (auto solved = detail::solve_increment(model, state, pore_pressure, part, leg, target, strain_increment,
+                                              options, damped, update_error)) {
+      pore_pressure = solved->pore_pressure;
       return solved->state;
+    }
   }
   if (splits < options.max_splits) {
     Leg half = leg;
     half.increment = 0.5 * leg.increment;
     const Vec6 middle_target = target - half.increment;  // used on the stress-imposed entries only
     Vec6 first, second;
+    double u = pore_pressure;
     const State middle =
-        mixed_control_increment(model, state, half, middle_target, first, options, splits + 1);
-    const State end = mixed_control_increment(model, middle, half, target, second, options, splits + 1);
+        mixed_control_increment(model, state, half, middle_target, first, u, options, splits + 1);
+    const State end = mixed_control_increment(model, middle, half, target, second, u, options, splits + 1);
+    pore_pressure = u;
     strain_increment = first + second;
     return end;
   }
@@ -139,27 +152,35 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
 /// Runs every leg from `initial`: one sample per increment, the initial state first; a failed
 /// increment throws IncrementError. The imposed
 /// stresses are accumulated as targets (not added to the last solved stress), so the residuals
-/// left by each Newton solve do not drift.
+/// left by each Newton solve do not drift. A drained leg starts with u = 0.
 template <class Model>
 PointHistory drive_mixed_control(const Model& model, const State& initial, std::span<const Leg> legs,
                                  const MixedControlOptions& options = {}) {
   PointHistory history{{Mat3::Zero(), initial}};
   Vec6 target = stress_to_voigt(initial.stress);
   std::array<bool, 6> held{};
+  bool was_undrained = false;
   for (std::size_t l = 0; l < legs.size(); ++l) {
-    for (int k = 0; k < legs[l].increments; ++k) {
+    const Leg leg = resolve_leg(legs[l], history.back());
+    // Opening the drainage dissipates the excess pore pressure: held total stresses become the
+    // effective stresses reached.
+    if (leg.undrained != was_undrained) held = {};
+    was_undrained = leg.undrained;
+    for (int k = 0; k < leg.increments; ++k) {
       const PointSample& last = history.back();
-      // A component that becomes stress-imposed starts from the stress it has reached.
-      const Vec6 current = stress_to_voigt(last.state.stress);
+      double u = leg.undrained ? last.pore_pressure : 0.0;
+      // A component that becomes stress-imposed starts from the (total) stress it has reached.
+      Vec6 current = stress_to_voigt(last.state.stress);
+      current.head<3>().array() -= u;
       for (int c = 0; c < 6; ++c) {
-        if (!legs[l].stress_imposed[c]) continue;
-        target(c) = (held[c] ? target(c) : current(c)) + legs[l].increment(c);
+        if (!leg.stress_imposed[c]) continue;
+        target(c) = (held[c] ? target(c) : current(c)) + leg.increment(c);
       }
-      held = legs[l].stress_imposed;
+      held = leg.stress_imposed;
       Vec6 strain_increment;
       try {
-        State next = mixed_control_increment(model, last.state, legs[l], target, strain_increment, options);
-        history.push_back({last.strain + strain_from_voigt(strain_increment), next});
+        State next = mixed_control_increment(model, last.state, leg, target, strain_increment, u, options);
+        history.push_back({last.strain + strain_from_voigt(strain_increment), next, u});
       } catch (const std::runtime_error& e) {
         throw IncrementError(e.what(), l, k);
       }

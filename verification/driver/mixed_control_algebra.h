@@ -11,16 +11,21 @@
 
 namespace soilsph::verification {
 
-/// Indices of a leg's stress-imposed (free strain) and strain-imposed components.
+/// Indices of a leg's stress-imposed (free strain) and strain-imposed components, and whether the
+/// leg is undrained (its imposed stresses are then total stresses, and ε_v is held).
 struct Partition {
   int free[6];
   int n_free = 0;
   int fixed[6];
   int n_fixed = 0;
-  explicit Partition(const Leg& leg) {
+  bool undrained = false;
+  explicit Partition(const Leg& leg) : undrained(leg.undrained) {
     for (int k = 0; k < 6; ++k) (leg.stress_imposed[k] ? free[n_free++] : fixed[n_fixed++]) = k;
   }
 };
+
+/// m = δ_ij in Voigt form: the pore pressure acts on the normal components only.
+inline double voigt_identity(int k) { return k < 3 ? 1.0 : 0.0; }
 
 /// The 6×6 Voigt stiffness (engineering shear strains → stresses) of moduli D.
 inline Mat6 voigt_stiffness(const Moduli& D) {
@@ -29,18 +34,31 @@ inline Mat6 voigt_stiffness(const Moduli& D) {
   return C;
 }
 
-/// Sets the free entries of `x` to the solution of C_ff x_f = b_f − C_fi x_i (x_i as given in x).
-inline void solve_free(const Mat6& C, const Partition& part, const Vec6& b, Vec6& x) {
-  if (part.n_free == 0) return;
-  Eigen::MatrixXd A(part.n_free, part.n_free);
-  Eigen::VectorXd rhs(part.n_free);
+/// Sets the free entries of `x` to the solution of C_ff x_f = b_f − C_fi x_i (x_i as given in x) and
+/// returns 0. Undrained, b holds total stresses σ = σ' − u m (tension-positive σ', compression-positive
+/// pore pressure u), so the pore pressure change is one more unknown, and the volume is held:
+///   C_ff x_f − m_f du = b_f − C_fi x_i,   m_f · x_f = −m_i · x_i;
+/// returns du. (Needs a stress-imposed normal component, which the programme reader checks.)
+inline double solve_free(const Mat6& C, const Partition& part, const Vec6& b, Vec6& x) {
+  if (part.n_free == 0) return 0.0;
+  const int n = part.n_free + (part.undrained ? 1 : 0);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
   for (int a = 0; a < part.n_free; ++a) {
     rhs(a) = b(part.free[a]);
     for (int c = 0; c < part.n_fixed; ++c) rhs(a) -= C(part.free[a], part.fixed[c]) * x(part.fixed[c]);
     for (int c = 0; c < part.n_free; ++c) A(a, c) = C(part.free[a], part.free[c]);
   }
+  if (part.undrained) {
+    for (int a = 0; a < part.n_free; ++a) {
+      A(a, part.n_free) = -voigt_identity(part.free[a]);
+      A(part.n_free, a) = voigt_identity(part.free[a]);
+    }
+    for (int c = 0; c < part.n_fixed; ++c) rhs(part.n_free) -= voigt_identity(part.fixed[c]) * x(part.fixed[c]);
+  }
   const Eigen::VectorXd solution = A.partialPivLu().solve(rhs);
   for (int a = 0; a < part.n_free; ++a) x(part.free[a]) = solution(a);
+  return part.undrained ? solution(part.n_free) : 0.0;
 }
 
 }  // namespace soilsph::verification

@@ -15,6 +15,7 @@ namespace soilsph::verification {
 struct PointSample {
   Mat3 strain = Mat3::Zero();
   State state;
+  double pore_pressure = 0.0;  ///< excess pore pressure u (Pa, compression-positive); 0 when drained
 };
 using PointHistory = std::vector<PointSample>;
 

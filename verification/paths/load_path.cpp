@@ -60,11 +60,9 @@ Vec6 driven_strain(LoadPath path, double d) {
   Vec6 e = Vec6::Zero();
   switch (path) {
     case LoadPath::TriaxialDrained:
+    case LoadPath::TriaxialUndrained:
     case LoadPath::Oedometer:
       e(0) = -d;
-      break;
-    case LoadPath::TriaxialUndrained:  // tr = 0
-      e.head<3>() << -d, 0.5 * d, 0.5 * d;
       break;
     case LoadPath::Isotropic:  // d is ε_v
       e.head<3>().setConstant(-d / 3.0);
@@ -89,6 +87,19 @@ std::string describe_increment(const PointTest& test, std::size_t leg, int incre
          format_number(test.strain_targets[leg]) + ")";
 }
 
+Leg resolve_leg(const Leg& leg, const PointSample& start) {
+  Leg resolved = leg;
+  const Vec6 strain = strain_to_voigt(start.strain);
+  Vec6 total = stress_to_voigt(start.state.stress);
+  if (leg.undrained) total.head<3>().array() -= start.pore_pressure;
+  for (int k = 0; k < 6; ++k) {
+    if (std::isnan(leg.target[k])) continue;
+    const double reached = leg.stress_imposed[k] ? total(k) : strain(k);
+    resolved.increment(k) = (leg.target[k] - reached) / leg.increments;
+  }
+  return resolved;
+}
+
 std::vector<Leg> build_legs(const PointTest& test) {
   validate(test);
   std::vector<Leg> legs;
@@ -96,13 +107,16 @@ std::vector<Leg> build_legs(const PointTest& test) {
     for (const Mat3& d : test.strain_increments) legs.push_back({{}, strain_to_voigt(d), 1});
     return legs;
   }
-  // Drained triaxial: the radial stresses are imposed with zero increment (held at −p_initial).
+  // Triaxial: the radial stresses are imposed with zero increment, held at −p_initial (total
+  // stresses when undrained, with the volume held and the pore pressure solved for).
   std::array<bool, 6> stress_imposed{};
-  if (test.path == LoadPath::TriaxialDrained) stress_imposed[1] = stress_imposed[2] = true;
+  const bool triaxial = test.path == LoadPath::TriaxialDrained || test.path == LoadPath::TriaxialUndrained;
+  if (triaxial) stress_imposed[1] = stress_imposed[2] = true;
   double previous = 0.0;
   for (double target : test.strain_targets) {
     const double step = (target - previous) / test.increments;
-    legs.push_back({stress_imposed, driven_strain(test.path, step), test.increments});
+    legs.push_back({stress_imposed, driven_strain(test.path, step), test.increments,
+                    test.path == LoadPath::TriaxialUndrained});
     previous = target;
   }
   return legs;

@@ -5,11 +5,13 @@
 /// increment. The mixed-control driver and the CVODE reference both consume legs, so they solve
 /// exactly the same problem.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "constitutive/voigt.h"
+#include "verification/driver/point_history.h"
 #include "verification/point_test.h"
 
 namespace soilsph::verification {
@@ -22,13 +24,25 @@ struct Leg {
   /// strain-imposed components, the stress increment (Pa) of stress-imposed components.
   Vec6 increment = Vec6::Zero();
   int increments = 1;
+  /// Undrained: the imposed stresses are total stresses σ' − u δ, and the volume is held (ε_v
+  /// constant), with the pore pressure u solved for. Drained legs have u = 0 (any excess from an
+  /// earlier undrained leg has dissipated at their start).
+  bool undrained = false;
+  /// Per component, optional (NaN: none): the value to reach at the leg's end, strain (Voigt) or
+  /// total stress (Pa) as the component is imposed, tension-positive. resolve_leg() turns it into
+  /// `increment` from the state the leg starts from, which a programme cannot know in advance.
+  std::array<double, 6> target = kNoTargets;
+  static constexpr std::array<double, 6> kNoTargets = {NAN, NAN, NAN, NAN, NAN, NAN};
 };
+
+/// `leg` with the increments of its targets from `start`: (target − value at start) / increments.
+Leg resolve_leg(const Leg& leg, const PointSample& start);
 
 /// The legs of `test`, validated: p_initial, ocr, increments, each strain target and each
 /// strain-path increment and its running sum within point_limits, legs of non-zero length, a
 /// non-empty strain path; throws std::invalid_argument naming the offending field or row.
 ///  - triaxial-drained:   ε_xx driven, σ_yy, σ_zz held (stress imposed, zero increment), shear strains 0;
-///  - triaxial-undrained: ε_xx driven, ε_yy = ε_zz = −ε_xx/2 (ε_v = 0), shear strains 0;
+///  - triaxial-undrained: ε_xx driven, total σ_yy, σ_zz held, undrained (ε_v = 0, u solved), shear strains 0;
 ///  - oedometer:          ε_xx driven, all other strains 0;
 ///  - isotropic:          ε_xx = ε_yy = ε_zz = −ε_v/3 driven, shear strains 0;
 ///  - strain-path:        every strain component imposed, one increment per given tensor.

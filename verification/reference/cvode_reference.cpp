@@ -18,10 +18,11 @@ namespace soilsph::verification {
 
 namespace {
 
-/// The ODE state: stress (Voigt, 6), total strain (Voigt, engineering shears, 6), p_c.
-constexpr int kSize = 13;
+/// The ODE state: stress (Voigt, 6), total strain (Voigt, engineering shears, 6), p_c, pore pressure.
+constexpr int kSize = 14;
 constexpr int kStrain = 6;
 constexpr int kPc = 12;
+constexpr int kPorePressure = 13;
 /// Output intervals (in increments) shorter than this are bridged without CVODE.
 constexpr double kTooClose = 1e-9;
 
@@ -35,6 +36,7 @@ struct Rates {
   Vec6 stress = Vec6::Zero();
   Vec6 strain = Vec6::Zero();
   double pc = 0.0;
+  double pore_pressure = 0.0;       ///< u̇, 0 on a drained leg
   double plastic_multiplier = 0.0;  ///< λ̇, 0 on the elastic branch
   bool defined = true;              ///< false where n_f:D:n_g + H ≤ 0: no plastic solution
 };
@@ -65,7 +67,7 @@ Rates rates(const Model& model, const Leg& leg, const Partition& part, const Vec
   }
   Rates r;
   r.strain = leg.increment;  // imposed strain rates per unit pseudo-time (one increment)
-  solve_free(C, part, leg.increment, r.strain);
+  r.pore_pressure = solve_free(C, part, leg.increment, r.strain);
   r.stress = C * r.strain;
   if constexpr (kPlastic<Model>) {
     if (plastic) {
@@ -109,6 +111,7 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   Eigen::Map<Vec6>{d} = r.stress;
   Eigen::Map<Vec6>{d + kStrain} = r.strain;
   d[kPc] = r.pc;
+  d[kPorePressure] = r.pore_pressure;
   return r.stress.allFinite() && std::isfinite(r.pc) ? 0 : 1;  // 1: recoverable, CVODE cuts the step
 }
 
@@ -199,11 +202,12 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   Eigen::Map<Vec6>{y} = stress_to_voigt(initial.stress);
   Eigen::Map<Vec6>{y + kStrain}.setZero();
   y[kPc] = initial.pc;
+  y[kPorePressure] = 0.0;
   // Absolute tolerances scaled to the stress level of the test.
   const double stress_scale = std::max({initial.stress.cwiseAbs().maxCoeff(), initial.pc, 1.0});
   double* atol = N_VGetArrayPointer(s.tolerances);
   for (int k = 0; k < kSize; ++k)
-    atol[k] = options.absolute_tolerance * (k < kStrain || k == kPc ? stress_scale : 1.0);
+    atol[k] = options.absolute_tolerance * (k < kStrain || k >= kPc ? stress_scale : 1.0);
 
   s.memory = CVodeCreate(CV_BDF, s.context);
   if (!s.memory) throw std::runtime_error("cvode reference: CVodeCreate failed");
@@ -221,10 +225,12 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   std::size_t leg_index = 0;
   int increment = 0;  // of the current leg, from 0: where a failure is reported
   try {
-    for (const Leg& leg : legs) {
+    for (const Leg& given : legs) {
+      const Leg leg = resolve_leg(given, history.back());
       increment = 0;
       problem.leg = &leg;
       problem.part = Partition(leg);
+      if (!leg.undrained) y[kPorePressure] = 0.0;  // drainage open: the excess has dissipated
       problem.plastic =
           starts_plastic(model, leg, problem.part, stress_of(y), y[kPc], options.surface_tolerance);
       check(CVodeReInit(s.memory, 0.0, s.y), "CVodeReInit", problem);
@@ -263,6 +269,7 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
         sample.strain = strain_from_voigt(Eigen::Map<const Vec6>(y + kStrain));
         sample.state.stress = stress_from_voigt(stress_of(y));
         sample.state.pc = y[kPc];
+        sample.pore_pressure = y[kPorePressure];
         history.push_back(sample);
         increment = k;
       }

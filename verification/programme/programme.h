@@ -1,0 +1,39 @@
+#pragma once
+/// @file
+/// A laboratory programme at one material point: an initial state, then legs (paths/load_path.h),
+/// each imposing per component a strain or a stress, drained or undrained. The built-in tests are
+/// shorthands for one (programme_of); programme files give any other (programme_file.h). Both the
+/// mixed-control driver and the CVODE reference run it.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "constitutive/material.h"
+#include "verification/paths/load_path.h"
+#include "verification/point_test.h"
+
+namespace soilsph::verification {
+
+struct Programme {
+  State initial;  ///< effective stress (tension-positive) and hardening state (MCC p_c)
+  std::vector<Leg> legs;
+  /// How a failure names leg l: "increment k of N of " + leg_names[l], or leg_names[l] alone for a
+  /// strain-path row ("FILE:LINE").
+  std::vector<std::string> leg_names;
+  bool legs_are_rows = false;
+};
+
+/// The programme of a built-in test (validated; std::invalid_argument as run_point_test says).
+Programme programme_of(const Material& material, const PointTest& test);
+
+/// Runs `programme` with `integrator` (a scheme name or "cvode"). Throws std::invalid_argument for
+/// an unknown integrator, std::runtime_error naming the increment when one cannot be solved or a
+/// result has lost meaning (as run_point_test).
+PointCurve run_programme(const Material& material, const Programme& programme, std::string_view integrator);
+
+/// The hardening state at effective stress `sigma` (tension-positive) with overconsolidation ratio
+/// `ocr`: MCC's p_c = OCR × the p_c of the ellipse through σ, p + q²/(M² p) (OCR · p on an
+/// isotropic state); models without one get 0.
+double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr);
+
+}  // namespace soilsph::verification
