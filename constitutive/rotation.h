@@ -19,9 +19,41 @@ inline Mat3 spin_rotation(const Mat3& spin_increment) {
   return (Mat3::Identity() - half).inverse() * (Mat3::Identity() + half);
 }
 
+/// Q a Qᵀ for Q = [[c, s, 0], [−s, c, 0], [0, 0, 1]], a rotation about z: the in-plane block and
+/// the (xz, yz) column and row rotate, a_zz stays (a need not be symmetric).
+inline Mat3 rotate_about_z(const Mat3& a, double c, double s) {
+  Mat3 b;  // Q a
+  for (int col = 0; col < 3; ++col) {
+    b(0, col) = c * a(0, col) + s * a(1, col);
+    b(1, col) = c * a(1, col) - s * a(0, col);
+    b(2, col) = a(2, col);
+  }
+  Mat3 r;  // (Q a) Qᵀ
+  for (int row = 0; row < 3; ++row) {
+    r(row, 0) = c * b(row, 0) + s * b(row, 1);
+    r(row, 1) = c * b(row, 1) - s * b(row, 0);
+    r(row, 2) = b(row, 2);
+  }
+  return r;
+}
+
 /// Rotates the tensorial parts of `state` with the spin increment; a zero spin costs one test.
+/// A spin about z alone (plane strain: Δω_xy = −Δω_yx, every other entry 0) takes the closed form
+/// of the same Cayley rotation, with a = ½Δω_xy:
+///   Q = [[c, s, 0], [−s, c, 0], [0, 0, 1]],  c = (1 − a²)/(1 + a²),  s = 2a/(1 + a²),
+/// instead of a 3×3 inverse and four general products (equal to round-off; tested).
 inline State rotate_state(const State& state, const Mat3& spin_increment) {
   if (spin_increment.isZero(0.0)) return state;
+  const Mat3& w = spin_increment;
+  if (w(0, 2) == 0.0 && w(1, 2) == 0.0 && w(2, 0) == 0.0 && w(2, 1) == 0.0 && w(0, 0) == 0.0 &&
+      w(1, 1) == 0.0 && w(2, 2) == 0.0 && w(1, 0) == -w(0, 1)) {
+    const double a = 0.5 * w(0, 1), inv = 1.0 / (1.0 + a * a);
+    const double c = (1.0 - a * a) * inv, s = 2.0 * a * inv;
+    State rotated = state;
+    rotated.stress = rotate_about_z(state.stress, c, s);
+    rotated.plastic_strain = rotate_about_z(state.plastic_strain, c, s);
+    return rotated;
+  }
   const Mat3 Q = spin_rotation(spin_increment);
   State rotated = state;
   rotated.stress = Q * state.stress * Q.transpose();

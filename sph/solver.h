@@ -70,6 +70,7 @@ SolverSetup make_solver_setup(const Scene& scene);
 struct Workspace {
   NeighbourList neighbours;
   std::vector<double> vx_next, vy_next, density_next;  ///< v^{n+½}, ρ^{n+1} while a step computes them
+  std::vector<double> volume;  ///< m/ρ^n of every particle, for eq 23 (one division per particle, not per pair)
   double previous_dt = 0.0;  ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
   double sound_speed = 0.0;  ///< current c (m/s)
   double max_speed = 0.0;    ///< largest soil speed |v^{n+½}| after the last step (m/s)
@@ -82,7 +83,7 @@ struct Workspace {
   std::string blow_up;  ///< what the close of the last step found insane (blow_up.h); empty: nothing
 
   Workspace(const SolverSetup& setup, const Particles& p)
-      : vx_next(p.vx), vy_next(p.vy), density_next(p.density), sound_speed(setup.sound_speed) {}
+      : vx_next(p.vx), vy_next(p.vy), density_next(p.density), volume(p.size()), sound_speed(setup.sound_speed) {}
   bool failed() const { return failure.failed() || error; }
 };
 
@@ -156,6 +157,7 @@ void advance(const Model& model, const Model& fallback, const SolverSetup& setup
       nl.fill_row(i, p.x, p.y, setup.kernel);
       if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i);
       set_stress_over_density2(p, i);
+      work.volume[i] = particle_volume(p, i);
       if (m.artificial_stress.enabled) set_artificial_stress(p, i, m.artificial_stress.epsilon);
     }
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
@@ -177,7 +179,8 @@ void advance(const Model& model, const Model& fallback, const SolverSetup& setup
     for (std::ptrdiff_t s = 0; s < soil; ++s) {
       const auto i = static_cast<std::size_t>(s);
       const KinematicRates rates =
-          kinematic_rates_of(p, nl, i, work.vx_next, work.vy_next, setup.velocity_gradient_correction);
+          kinematic_rates_of(p, nl, i, work.vx_next, work.vy_next, work.volume,
+                             setup.velocity_gradient_correction);
       update_particle_stress(model, fallback, p, i, rates.L, dt, work.failure);
       work.density_next[i] = p.density[i] + dt * rates.density_rate;
       p.x[i] += dt * work.vx_next[i];
@@ -414,7 +417,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   if (error) std::rethrow_exception(error);
   stats = statistics_now();
   stats.workspace_bytes =
-      work.neighbours.bytes_per_particle() * p.size() + 3 * p.size() * sizeof(double);  // the *_next buffers
+      work.neighbours.bytes_per_particle() * p.size() + 4 * p.size() * sizeof(double);  // the *_next buffers, volume
   return stats;
 }
 

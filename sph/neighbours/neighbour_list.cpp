@@ -98,6 +98,19 @@ std::size_t NeighbourList::search_row(std::size_t i, std::span<const double> x, 
         ++k;
       }
   candidate_count_[i] = std::min(k - first, slots_);
+  if (k <= last) {
+    // Nearest first (ties by index, so the order is a function of the positions alone): while
+    // the candidates move less than the skin, the pairs within the support stay a prefix of the
+    // row and the kernel's inner branch the first of them, so the tests of fill_row are predictable.
+    const double xi = x[i], yi = y[i];
+    std::sort(candidates_.begin() + static_cast<std::ptrdiff_t>(first),
+              candidates_.begin() + static_cast<std::ptrdiff_t>(k), [&](int a, int b) {
+                const double ax = xi - x[static_cast<std::size_t>(a)], ay = yi - y[static_cast<std::size_t>(a)];
+                const double bx = xi - x[static_cast<std::size_t>(b)], by = yi - y[static_cast<std::size_t>(b)];
+                const double ra = ax * ax + ay * ay, rb = bx * bx + by * by;
+                return ra < rb || (ra == rb && a < b);
+              });
+  }
   return k - first;
 }
 

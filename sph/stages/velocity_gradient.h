@@ -45,15 +45,17 @@ struct KinematicRates {
   VelocityGradient L;
   double density_rate;
 };
-inline KinematicRates kinematic_rates_of(const Particles& p, const NeighbourList& nl, std::size_t i,
-                                         std::span<const double> vx, std::span<const double> vy,
-                                         bool corrected) {
+/// `volume_of(j)` gives m_j/ρ_j.
+template <class Volume>
+KinematicRates kinematic_rates_with(const Particles& p, const NeighbourList& nl, std::size_t i,
+                                    std::span<const double> vx, std::span<const double> vy,
+                                    Volume&& volume_of, bool corrected) {
   VelocityGradient L;
   double rate = 0.0;
   double mxx = 0.0, mxy = 0.0, myx = 0.0, myy = 0.0;  // kernel moment M (x_j − x_i = −r)
   nl.for_each_pair(i, [&](const NeighbourList::Pair& q) {
     const std::size_t j = q.j;
-    const double volume = p.mass[j] / p.density[j];
+    const double volume = volume_of(j);
     const double dvx = vx[j] - vx[i], dvy = vy[j] - vy[i];
     L.xx += volume * dvx * q.gx;
     L.xy += volume * dvx * q.gy;
@@ -73,6 +75,23 @@ inline KinematicRates kinematic_rates_of(const Particles& p, const NeighbourList
     L = {L.xx * ixx + L.xy * iyx, L.xx * ixy + L.xy * iyy, L.yx * ixx + L.yy * iyx, L.yx * ixy + L.yy * iyy};
   }
   return {L, rate};
+}
+
+/// m/ρ of particle i, read by every pair of eq 23.
+inline double particle_volume(const Particles& p, std::size_t i) { return p.mass[i] / p.density[i]; }
+
+/// With `volume` holding particle_volume of every particle: one division per particle, not per pair.
+inline KinematicRates kinematic_rates_of(const Particles& p, const NeighbourList& nl, std::size_t i,
+                                         std::span<const double> vx, std::span<const double> vy,
+                                         std::span<const double> volume, bool corrected) {
+  return kinematic_rates_with(p, nl, i, vx, vy, [&](std::size_t j) { return volume[j]; }, corrected);
+}
+/// The same, each volume computed where it is read.
+inline KinematicRates kinematic_rates_of(const Particles& p, const NeighbourList& nl, std::size_t i,
+                                         std::span<const double> vx, std::span<const double> vy,
+                                         bool corrected) {
+  return kinematic_rates_with(p, nl, i, vx, vy, [&](std::size_t j) { return particle_volume(p, j); },
+                              corrected);
 }
 
 /// Fills p.lxx, p.lxy, p.lyx, p.lyy for every soil particle from p.vx, p.vy (orphaned OpenMP loop).

@@ -52,3 +52,21 @@ TEST_CASE("the Cayley rotation is orthogonal, first-order equal to the paper's t
     }
   }
 }
+
+TEST_CASE("a spin about z alone takes the closed form of the same Cayley rotation", "[rotation]") {
+  std::mt19937_64 rng(17);
+  for (double size : {1e-8, 1e-3, 0.1, 2.0}) {
+    const Mat3 w_any = test::random_skew(rng, size);
+    Mat3 w = Mat3::Zero();  // the plane-strain spin of the SPH solver
+    w(0, 1) = w_any(0, 1), w(1, 0) = -w_any(0, 1);
+    State s;
+    s.stress = test::random_symmetric(rng, 1e5);
+    s.plastic_strain = test::random_symmetric(rng, 1e-2);
+    s.plastic_strain(0, 2) += 1e-3;  // not symmetric: a general tensor rotates the same way
+    const Mat3 Q = spin_rotation(w);
+    const State r = rotate_state(s, w);
+    CHECK((r.stress - Q * s.stress * Q.transpose()).norm() < 1e-14 * s.stress.norm());
+    CHECK((r.plastic_strain - Q * s.plastic_strain * Q.transpose()).norm() < 1e-14 * s.plastic_strain.norm());
+    CHECK(r.stress(2, 2) == s.stress(2, 2));
+  }
+}
