@@ -36,6 +36,7 @@ Parameters parameters(const DruckerPrager& m) {
   out.emplace_back("friction_angle", number(p.friction_angle));
   out.emplace_back("cohesion", number(p.cohesion));
   out.emplace_back("dilatancy_angle", number(p.dilatancy_angle));
+  out.emplace_back("plastic_potential", quoted(plastic_potential_name(p.plastic_potential)));
   out.emplace_back("integrator", quoted(integrator_name(p.integrator)));
   out.emplace_back("substep_tolerance", number(p.substep_tolerance));
   return out;

@@ -14,7 +14,9 @@ void describe(const LinearElastic& m) {
 void describe(const DruckerPrager& m) {
   const Moduli D = m.elasticity().at(0.0);
   std::cout << "  K = " << D.K << " Pa, G = " << D.G << " Pa\n"
-            << "  alpha_phi = " << m.alpha_phi() << ", k_c = " << m.k_c() << " Pa (eq 19, plane strain)\n";
+            << "  alpha_phi = " << m.alpha_phi() << ", k_c = " << m.k_c() << " Pa (eq 19, plane strain)\n"
+            << "  alpha_psi = " << m.alpha_psi() << " (the plastic potential's I1 coefficient, "
+            << plastic_potential_name(m.params().plastic_potential) << ")\n";
 }
 void describe(const ModifiedCamClay& m) {
   std::cout << "  M = " << m.M() << " (eq 26), (1+e0)/(lambda-kappa) = " << m.hardening_exponent() << '\n';

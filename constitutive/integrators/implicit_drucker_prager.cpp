@@ -7,7 +7,7 @@ namespace soilsph {
 State implicit_update(const DruckerPrager& model, const State& start, const Mat3& strain_increment,
                       Mat6* tangent) {
   const Moduli D = model.elasticity().at(0.0);
-  const double alpha = model.alpha_phi(), sin_psi = model.sin_psi();
+  const double alpha = model.alpha_phi(), alpha_psi = model.alpha_psi();
   // The trial's invariants from the start's and the increment's own parts, not from the summed
   // trial stress: where 2G·Δε dwarfs the stress (stiff soil, low pressure) the sum's components
   // round the start's I1 away, while I1 + 3K tr Δε keeps it (exactly, on an isochoric path).
@@ -22,22 +22,21 @@ State implicit_update(const DruckerPrager& model, const State& start, const Mat3
     if (tangent) *tangent = voigt_isotropic_stiffness(D.K, D.G);
     return next;
   }
-  const double A = D.G + 27.0 * alpha * D.K * sin_psi;  // n_f : D : n_g (denominator of eq 22)
+  const double A = D.G + 9.0 * alpha * D.K * alpha_psi;  // n_f : D : n_g (denominator of eq 22)
   const double d_lambda = f_trial / A;
 
   // On the cone √J2 = k_c − α_φ I1 (= √J2_tr − GΔλ, computed without its cancellation near the apex).
-  const double I1_next = I1 - 27.0 * D.K * sin_psi * d_lambda;
+  const double I1_next = I1 - 9.0 * D.K * alpha_psi * d_lambda;
   const double sqrt_j2_next = model.k_c() - alpha * I1_next;
   if (sqrt_j2_next > 0.0) {  // return to the cone
     next.stress = sqrt_j2_next / sqrt_j2 * s_trial + I1_next / 3.0 * Mat3::Identity();
-    accumulate_plastic_strain(next,
-                              d_lambda * (s_trial / (2.0 * sqrt_j2) + 3.0 * sin_psi * Mat3::Identity()));
+    accumulate_plastic_strain(next, d_lambda * (s_trial / (2.0 * sqrt_j2) + alpha_psi * Mat3::Identity()));
     next.plastic_multiplier = d_lambda;
     if (tangent) {
-      // σ = σ_tr − Δλ(√2 G n + 9K sinψ I), n = s_tr/‖s_tr‖, ‖s_tr‖ = √2 √J2_tr:
-      // C = D − (√2 G n + 9K sinψ I) ⊗ (√2 G n + 3K α_φ I)/A − 2G (G Δλ/√J2_tr)(𝕀_dev − n ⊗ n).
+      // σ = σ_tr − Δλ(√2 G n + 3K α_ψ I), n = s_tr/‖s_tr‖, ‖s_tr‖ = √2 √J2_tr:
+      // C = D − (√2 G n + 3K α_ψ I) ⊗ (√2 G n + 3K α_φ I)/A − 2G (G Δλ/√J2_tr)(𝕀_dev − n ⊗ n).
       const Mat3 n = s_trial / (std::sqrt(2.0) * sqrt_j2);
-      const Mat3 flow = std::sqrt(2.0) * D.G * n + 9.0 * D.K * sin_psi * Mat3::Identity();
+      const Mat3 flow = std::sqrt(2.0) * D.G * n + 3.0 * D.K * alpha_psi * Mat3::Identity();
       const Mat3 normal = std::sqrt(2.0) * D.G * n + 3.0 * D.K * alpha * Mat3::Identity();
       *tangent = voigt_isotropic_stiffness(D.K, D.G) - voigt_outer(flow, normal) / A -
                  2.0 * D.G * (D.G * d_lambda / sqrt_j2) * (voigt_deviatoric_projector() - voigt_outer(n, n));

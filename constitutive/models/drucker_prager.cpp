@@ -14,6 +14,10 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kApexSqrtJ2 = 1e-12;
 }  // namespace
 
+std::string_view plastic_potential_name(PlasticPotential potential) {
+  return potential == PlasticPotential::PaperEq20 ? "paper-eq20" : "matched";
+}
+
 DruckerPragerParams DruckerPragerParams::read(const TableReader& t) {
   DruckerPragerParams p{};
   p.density = t.number("density", Range::positive(), "kg/m^3");
@@ -22,19 +26,30 @@ DruckerPragerParams DruckerPragerParams::read(const TableReader& t) {
   p.friction_angle = t.number("friction_angle", Range::open(0.0, 90.0), "degrees");
   p.cohesion = t.number_or("cohesion", 0.0, Range::closed(0.0, limits::kMaxStress), "Pa");
   p.dilatancy_angle = t.number_or("dilatancy_angle", 0.0, Range::closed(0.0, p.friction_angle), "degrees");
+  using enum PlasticPotential;
+  const std::string potential =
+      t.choice_or("plastic_potential", plastic_potential_name(Matched),
+                  {plastic_potential_name(Matched), plastic_potential_name(PaperEq20)});
+  p.plastic_potential = potential == plastic_potential_name(PaperEq20) ? PaperEq20 : Matched;
   p.integrator = read_integrator(t, kDefaultIntegrator);
   p.substep_tolerance = read_substep_tolerance(t);
   return p;
 }
 
 DruckerPrager::DruckerPrager(const Params& params)
-    : params_(params),
-      elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)),
-      sin_psi_(std::sin(params.dilatancy_angle * kDegree)) {
+    : params_(params), elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)) {
   const double tan_phi = std::tan(params.friction_angle * kDegree);
   const double root = std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);  // eq 19
   alpha_phi_ = tan_phi / root;
   k_c_ = 3.0 * params.cohesion / root;
+  // The potential's slope, chosen once here so that the update reads one number (docs/derivations.md).
+  const double psi = params.dilatancy_angle * kDegree;
+  if (params.plastic_potential == PlasticPotential::PaperEq20) {
+    alpha_psi_ = 3.0 * std::sin(psi);  // eq 20 as printed
+  } else {
+    const double tan_psi = std::tan(psi);
+    alpha_psi_ = tan_psi / std::sqrt(9.0 + 12.0 * tan_psi * tan_psi);  // eq 19 with ψ for φ
+  }
 }
 
 double DruckerPrager::yield(const Mat3& sigma, double) const {
@@ -60,7 +75,7 @@ Mat3 DruckerPrager::yield_gradient(const Mat3& sigma, double) const {
 }
 
 Mat3 DruckerPrager::flow_direction(const Mat3& sigma, double) const {
-  return sqrt_j2_gradient(sigma) + 3.0 * sin_psi_ * Mat3::Identity();
+  return sqrt_j2_gradient(sigma) + alpha_psi_ * Mat3::Identity();
 }
 
 Mat3 DruckerPrager::correct(const Mat3& sigma, double) const {

@@ -3,8 +3,11 @@
 /// Drucker–Prager elastic–perfectly-plastic model with non-associated flow (paper §3.2.2).
 ///   yield      f = √J2 + α_φ I1 − k_c                                      (eq 17)
 ///   constants  α_φ = tanφ / √(9 + 12 tan²φ),  k_c = 3c / √(9 + 12 tan²φ)   (eq 19, plane-strain fit)
-///   potential  g = √J2 + 3 I1 sinψ                                          (eq 20)
-/// Stresses are tension-positive, so I1 < 0 in compression and the cone's apex is at I1 = k_c/α_φ.
+///   potential  g = √J2 + α_ψ I1, α_ψ chosen by `plastic_potential` (docs/derivations.md):
+///              "matched" (default)  α_ψ = tanψ / √(9 + 12 tan²ψ), ψ matched to Mohr–Coulomb as φ is
+///              "paper-eq20"         α_ψ = 3 sinψ, the potential as printed (eq 20)
+/// Stresses are tension-positive, so I1 < 0 in compression and the cone's apex is at I1 = k_c/α_φ;
+/// α_ψ > 0 makes the plastic volume grow (dilate).
 #include "constitutive/elasticity.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/parameters.h"
@@ -12,6 +15,13 @@
 #include "constitutive/voigt.h"
 
 namespace soilsph {
+
+/// The plastic potential's I1 coefficient α_ψ as a function of ψ.
+enum class PlasticPotential {
+  Matched,    ///< α_ψ = tanψ/√(9 + 12 tan²ψ): like α_φ of eq 19; ψ = φ is associated flow
+  PaperEq20,  ///< α_ψ = 3 sinψ: eq 20 as printed, to reproduce the paper
+};
+std::string_view plastic_potential_name(PlasticPotential potential);
 
 struct DruckerPragerParams {
   /// Input default: the closed-form return is the cheapest update (48 ns) and as accurate as any
@@ -23,6 +33,7 @@ struct DruckerPragerParams {
   double friction_angle;   ///< φ, degrees
   double cohesion;         ///< c, Pa
   double dilatancy_angle;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
+  PlasticPotential plastic_potential = PlasticPotential::Matched;  ///< how α_ψ follows from ψ
   Integrator integrator = Integrator::Explicit;
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
 
@@ -42,7 +53,8 @@ class DruckerPrager {
   double substep_tolerance() const { return params_.substep_tolerance; }
   double alpha_phi() const { return alpha_phi_; }
   double k_c() const { return k_c_; }
-  double sin_psi() const { return sin_psi_; }
+  /// ∂g/∂I1 of the plastic potential g = √J2 + α_ψ I1, fixed when the model is built.
+  double alpha_psi() const { return alpha_psi_; }
   /// I1 at the apex of the cone, k_c/α_φ (paper-notes: eq 31 prints the inverse ratio).
   double apex_first_invariant() const { return k_c_ / alpha_phi_; }
 
@@ -52,7 +64,7 @@ class DruckerPrager {
   double normalized_yield(const Mat3& sigma, double pc = 0.0) const;
   /// ∂f/∂σ = s/(2√J2) + α_φ I (the deviatoric part is taken as zero at the apex).
   Mat3 yield_gradient(const Mat3& sigma, double /*pc*/ = 0.0) const;
-  /// ∂g/∂σ = s/(2√J2) + 3 sinψ I (eq 20).
+  /// ∂g/∂σ = s/(2√J2) + α_ψ I (eq 20 with α_ψ = 3 sinψ as printed, or the matched α_ψ).
   Mat3 flow_direction(const Mat3& sigma, double /*pc*/ = 0.0) const;
   /// Perfect plasticity: no hardening.
   double hardening_modulus(const Mat3&, double) const { return 0.0; }
@@ -74,7 +86,7 @@ class DruckerPrager {
   Elasticity elasticity_;
   double alpha_phi_;
   double k_c_;
-  double sin_psi_;
+  double alpha_psi_;
 };
 
 }  // namespace soilsph

@@ -87,6 +87,10 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
        "\"modified-cam-clay\")"},
       {kDruckerPrager + "integrator = \"rk4\"\n", "[material] integrator = \"rk4\" is not allowed"},
       {kCamClay + "elasticity = \"nonlinear\"\n", "[material] elasticity = \"nonlinear\" is not allowed"},
+      {kDruckerPrager + "plastic_potential = \"eq20\"\n",
+       "case.toml: [material] plastic_potential = \"eq20\" is not allowed (allowed: \"matched\", "
+       "\"paper-eq20\")"},
+      {kDruckerPrager + "plastic_potential = 20\n", "case.toml: [material] plastic_potential"},
       {kCamClay + "elasticity = \"constant\"\n", "[material] young_modulus: is missing"},
       {kDruckerPrager + "frictoin_angle = 30.0\n",
        "case.toml: [material] frictoin_angle: is not a known key"},
@@ -236,13 +240,17 @@ TEST_CASE("a described material reads back to the same parameters", "[parameters
   };
   const Material dp = from_text(replace(replace(kDruckerPrager, "cohesion = 0.0", "cohesion = 1234.5678"),
                                         "dilatancy_angle = 0.0", "dilatancy_angle = 0.1") +
-                                "integrator = \"substep\"\nsubstep_tolerance = 3e-7\n");
+                                "integrator = \"substep\"\nsubstep_tolerance = 3e-7\n"
+                                "plastic_potential = \"paper-eq20\"\n");
   const auto& a = std::get<DruckerPrager>(dp).params();
   const auto& b = std::get<DruckerPrager>(read_back(dp)).params();
   CHECK(std::tie(a.density, a.young_modulus, a.poisson_ratio, a.friction_angle, a.cohesion, a.dilatancy_angle,
-                 a.integrator, a.substep_tolerance) ==
+                 a.plastic_potential, a.integrator, a.substep_tolerance) ==
         std::tie(b.density, b.young_modulus, b.poisson_ratio, b.friction_angle, b.cohesion, b.dilatancy_angle,
-                 b.integrator, b.substep_tolerance));
+                 b.plastic_potential, b.integrator, b.substep_tolerance));
+  CHECK(a.plastic_potential == PlasticPotential::PaperEq20);
+  CHECK(std::get<DruckerPrager>(from_text(kDruckerPrager)).params().plastic_potential ==
+        PlasticPotential::Matched);
   const Material mcc = from_text(kCamClay + "elastic_pressure_floor = 1.0e-1\nintegrator = \"explicit\"\n" +
                                  "substep_tolerance = 1e-9\nimplicit_alpha = 0.75\n");
   const auto& c = std::get<ModifiedCamClay>(mcc).params();

@@ -25,17 +25,33 @@ Mat3 central_difference_gradient(F f, const Mat3& sigma, double h) {
 
 TEST_CASE("Drucker-Prager yield and potential gradients match central differences", "[gradient]") {
   std::mt19937_64 rng(7);
-  const DruckerPrager dp(test::table1_drucker_prager(5e3, 10.0));
-  const double sin_psi = std::sin(10.0 * M_PI / 180.0);
+  const double psi = 10.0 * M_PI / 180.0;
+  // g = √J2 + α_ψ I1: matched α_ψ = tanψ/√(9 + 12 tan²ψ) (default), printed eq 20 α_ψ = 3 sinψ.
+  const auto [potential, alpha_psi] = GENERATE_COPY(
+      std::pair(PlasticPotential::Matched, std::tan(psi) / std::sqrt(9 + 12 * std::tan(psi) * std::tan(psi))),
+      std::pair(PlasticPotential::PaperEq20, 3 * std::sin(psi)));
+  DruckerPrager::Params params = test::table1_drucker_prager_params(5e3, 10.0);
+  params.plastic_potential = potential;
+  const DruckerPrager dp(params);
+  CHECK(dp.alpha_psi() == Approx(alpha_psi).epsilon(1e-14));
   for (int trial = 0; trial < 100; ++trial) {
     const Mat3 sigma = isotropic_stress(100e3) + test::random_symmetric(rng, 50e3);
     const Mat3 fd = central_difference_gradient([&](const Mat3& s) { return dp.yield(s); }, sigma, 1.0);
     CHECK((dp.yield_gradient(sigma) - fd).norm() <= 1e-6 * fd.norm());
-    // g = √J2 + 3 I1 sinψ (eq 20)
-    auto g = [&](const Mat3& s) { return std::sqrt(second_deviatoric_invariant(s)) + 3 * s.trace() * sin_psi; };
+    auto g = [&](const Mat3& s) { return std::sqrt(second_deviatoric_invariant(s)) + alpha_psi * s.trace(); };
     const Mat3 fd_g = central_difference_gradient(g, sigma, 1.0);
     CHECK((dp.flow_direction(sigma) - fd_g).norm() <= 1e-6 * fd_g.norm());
   }
+}
+
+TEST_CASE("the matched D-P potential with psi = phi is the yield function: associated flow", "[gradient]") {
+  DruckerPrager::Params params = test::table1_drucker_prager_params(5e3, 35.0);
+  REQUIRE(params.friction_angle == 35.0);
+  const DruckerPrager dp(params);
+  CHECK(dp.alpha_psi() == dp.alpha_phi());
+  std::mt19937_64 rng(5);
+  const Mat3 sigma = isotropic_stress(100e3) + test::random_symmetric(rng, 50e3);
+  CHECK((dp.flow_direction(sigma) - dp.yield_gradient(sigma)).norm() == 0.0);
 }
 
 TEST_CASE("Modified Cam-Clay yield gradient and hardening modulus match central differences", "[gradient]") {

@@ -233,7 +233,7 @@ const std::vector<std::string> kMaterialKeyNames = {"model",           "density"
                                                     "swelling_index",  "initial_void_ratio",
                                                     "elasticity",      "elastic_pressure_floor",
                                                     "integrator",      "substep_tolerance",
-                                                    "implicit_alpha"};
+                                                    "implicit_alpha",  "plastic_potential"};
 
 std::vector<Spec> make_specs() {
   const auto positive = fixed(open(0, kInf));
@@ -296,6 +296,13 @@ std::vector<Spec> make_specs() {
        {},
        {},
        [](const toml::table& d) { return closed(0, number_at(d, "material", "friction_angle", 90)); }});
+  s.push_back({"material",
+               "plastic_potential",
+               Type::String,
+               false,
+               {"\"matched\"", "\"paper-eq20\"", "\"paper\"", "\"Matched\"", "\"\""},
+               {},
+               {"matched", "paper-eq20"}});
   s.push_back({"material",
                "compression_index",
                Type::Number,
@@ -552,7 +559,7 @@ bool material_key_used(const toml::table& doc, const std::string& key) {
   if (key == "model" || key == "density" || key == "poisson_ratio") return true;
   if (key == "young_modulus") return dp || le || (mcc && elasticity == "constant");
   if (key == "friction_angle") return dp || mcc;
-  if (key == "cohesion" || key == "dilatancy_angle") return dp;
+  if (key == "cohesion" || key == "dilatancy_angle" || key == "plastic_potential") return dp;
   if (key == "compression_index" || key == "swelling_index" || key == "initial_void_ratio" ||
       key == "elasticity" || key == "implicit_alpha")
     return mcc;

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 
 namespace soilsph::verification {
@@ -12,7 +11,7 @@ DruckerPragerStrainPath::DruckerPragerStrainPath(const DruckerPrager& model, dou
     : p_initial_(p_initial), r_(volume_ratio) {
   const Moduli D = model.elasticity().at(p_initial);
   const double alpha = model.alpha_phi(), root3 = std::sqrt(3.0);
-  const double sin_psi = std::sin(model.params().dilatancy_angle * std::numbers::pi / 180.0);
+  const double alpha_psi = model.alpha_psi();  // g = √J2 + α_ψ I1
   dp_elastic_ = D.K * volume_ratio;
   dq_elastic_ = 3.0 * D.G * shear_ratio;
   // Cone in the (p, q) plane: q = √3 (3α p + k_c); the elastic path q = dq/dp · (p − p_i) meets it
@@ -20,8 +19,8 @@ DruckerPragerStrainPath::DruckerPragerStrainPath(const DruckerPrager& model, dou
   const double gap0 = root3 * (3.0 * alpha * p_initial + model.k_c());
   const double closing = dq_elastic_ - 3.0 * root3 * alpha * dp_elastic_;  // d(q − q_cone)/dε_a
   eps_yield_ = closing > 0.0 ? gap0 / closing : std::numeric_limits<double>::infinity();
-  const double rate = closing / (root3 * (D.G + 27.0 * alpha * D.K * sin_psi));  // dλ/dε_a
-  dp_plastic_ = D.K * (volume_ratio + 9.0 * sin_psi * rate);
+  const double rate = closing / (root3 * (D.G + 9.0 * alpha * D.K * alpha_psi));  // dλ/dε_a
+  dp_plastic_ = D.K * (volume_ratio + 3.0 * alpha_psi * rate);
   dq_plastic_ = 3.0 * root3 * alpha * dp_plastic_;
   if (!std::isfinite(gap0) || gap0 < 0.0)
     throw std::invalid_argument("D-P strain path: start outside the cone");

@@ -6,8 +6,8 @@
 /// docs/derivations.md §D-P strain paths.
 ///   elastic   dp = K r dε_a, dq = 3G s dε_a, until the cone q = √3 (3 α_φ p + k_c) (eq 17, triaxial
 ///             compression: √J2 = q/√3, I1 = −3p);
-///   plastic   the potential (eq 20) gives per unit dλ dε_v^p = −9 sinψ, dε_q^p = 1/√3; staying on the
-///             cone, dq = 3√3 α_φ dp, fixes dλ/dε_a = 3(G s − √3 α_φ K r) / (√3 (G + 27 α_φ K sinψ)).
+///   plastic   the potential g = √J2 + α_ψ I1 gives per unit dλ dε_v^p = −3 α_ψ, dε_q^p = 1/√3; staying
+///             on the cone, dq = 3√3 α_φ dp, fixes dλ/dε_a = 3(G s − √3 α_φ K r) / (√3 (G + 9 α_φ α_ψ K)).
 /// Both branches are linear in ε_a. Valid while the stress stays in triaxial compression (q ≥ 0).
 #include "constitutive/models/drucker_prager.h"
 #include "verification/closed_form/reference_point.h"

@@ -1,7 +1,6 @@
 #include "verification/closed_form/drucker_prager_triaxial.h"
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace soilsph::verification {
@@ -12,14 +11,17 @@ DruckerPragerDrainedTriaxial::DruckerPragerDrainedTriaxial(const DruckerPrager& 
   const double alpha = model.alpha_phi();
   if (alpha >= 1.0 / root3) throw std::invalid_argument("D-P triaxial: alpha_phi >= 1/sqrt(3), no peak");
   q_peak_ = (3.0 * alpha * p_initial + model.k_c()) / (1.0 / root3 - alpha);
-  // Plastic strain rates of the potential g = √J2 + 3 I1 sinψ in triaxial compression, where
+  // Plastic strain rates of the potential g = √J2 + α_ψ I1 in triaxial compression, where
   // s/(2√J2) = diag(−1/√3, 1/(2√3), 1/(2√3)) (tension-positive): per unit dλ, compression-positive,
-  // dε_a^p = 1/√3 − 3 sinψ and dε_v^p = −9 sinψ. The stress is fixed, so the elastic strain is too.
-  const double sin_psi = std::sin(model.params().dilatancy_angle * std::numbers::pi / 180.0);
-  const double axial_rate = 1.0 / root3 - 3.0 * sin_psi;
+  // dε_a^p = 1/√3 − α_ψ and dε_v^p = −3 α_ψ. The stress is fixed, so the elastic strain is too
+  // (docs/derivations.md; α_ψ = 3 sinψ for the printed eq 20).
+  const double alpha_psi = model.alpha_psi();
+  const double axial_rate = 1.0 / root3 - alpha_psi;
   if (axial_rate <= 0.0)
-    throw std::invalid_argument("D-P triaxial: sin(psi) >= 1/(3 sqrt(3)), no axial flow");
-  plastic_dilation_slope_ = -9.0 * sin_psi / axial_rate;
+    throw std::invalid_argument(
+        "D-P triaxial: the potential's alpha_psi >= 1/sqrt(3), no axial flow (paper-eq20 with psi >= 11.1 "
+        "degrees)");
+  plastic_dilation_slope_ = -3.0 * alpha_psi / axial_rate;
 }
 
 ReferencePoint DruckerPragerDrainedTriaxial::at(double eps_a) const {

@@ -4,8 +4,9 @@
 /// −p_i, axial strain ε_a driven (compression-positive). Derivation in docs/verification.md §D-P.
 ///   elastic branch     q = E ε_a,  ε_v = (1 − 2ν) ε_a,  p = p_i + q/3
 ///   peak (eq 17, 19)   √J2 = q/√3, I1 = −3p = −3p_i − q  ⇒  q_peak = (3 α_φ p_i + k_c)/(1/√3 − α_φ)
-///   perfectly plastic  stress fixed at the peak; the potential (eq 20) gives
-///                      dε_v/dε_a = −9 sinψ / (1/√3 − 3 sinψ) (dilation for ψ > 0)
+///   perfectly plastic  stress fixed at the peak; the potential g = √J2 + α_ψ I1 gives
+///                      dε_v/dε_a = −3 α_ψ / (1/√3 − α_ψ) (dilation for ψ > 0): matched α_ψ
+///                      = tanψ/√(9 + 12 tan²ψ), or α_ψ = 3 sinψ as printed (eq 20)
 #include "constitutive/models/drucker_prager.h"
 #include "verification/closed_form/reference_point.h"
 
