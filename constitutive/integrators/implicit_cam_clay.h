@@ -5,7 +5,8 @@
 /// 1985, Int. J. Numer. Methods Eng. 21:1561–1576), material key `implicit_alpha`:
 ///  - α = 1 is backward Euler (closest-point projection), first order;
 ///  - α = ½ (the default) is second order: 20 increments reach 1e-5 (drained) and 1e-4 (undrained)
-///    on the Table 1 triaxial paths to ε_a = 0.1, where backward Euler has 3e-3 and 7e-3;
+///    on the Table 1 triaxial paths to ε_a = 0.1 (constant E = 1 MPa), where backward Euler has 3e-3
+///    and 7e-3; a stiffer clay (K = (1+e0)p/κ from 200 kPa) needs `implicit_tolerance` (below);
 ///  - the flow of an increment that starts inside the surface is taken from its elastic entry to
 ///    the surface σ_t (found by Newton on the exact elastic path), not from σ_n;
 ///  - a stiffness cap on the entry's weight keeps large softening steps from overshooting (see
