@@ -19,7 +19,7 @@ using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay>;
 inline constexpr std::string_view kMaterialKeys[] = {
     "model", "density", "young_modulus", "poisson_ratio", "friction_angle", "cohesion", "dilatancy_angle",
     "compression_index", "swelling_index", "initial_void_ratio", "elasticity", "elastic_pressure_floor",
-    "integrator", "substep_tolerance", "implicit_alpha", "plastic_potential"};
+    "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential"};
 
 /// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
 /// other models are reported on stderr as ignored; keys no model knows are errors.

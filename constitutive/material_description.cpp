@@ -58,6 +58,7 @@ Parameters parameters(const ModifiedCamClay& m) {
   out.emplace_back("integrator", quoted(integrator_name(p.integrator)));
   out.emplace_back("substep_tolerance", number(p.substep_tolerance));
   out.emplace_back("implicit_alpha", number(p.implicit_alpha));
+  out.emplace_back("implicit_tolerance", number(p.implicit_tolerance));
   return out;
 }
 }  // namespace

@@ -35,6 +35,13 @@ Material with_substep_tolerance(const Material& material, double tolerance) {
   });
 }
 
+/// A copy of an MCC `material` with another `implicit_tolerance`.
+Material with_implicit_tolerance(const Material& material, double tolerance) {
+  return with_edited_params(material, [tolerance](auto& params) {
+    if constexpr (requires { params.implicit_tolerance; }) params.implicit_tolerance = tolerance;
+  });
+}
+
 struct Variant {
   std::string integrator;
   Material material;
@@ -44,6 +51,15 @@ struct Variant {
 std::vector<Variant> variants(const Material& material, const WorkPrecisionOptions& options) {
   std::vector<Variant> out;
   for (const std::string& integrator : options.integrators) {
+    if (integrator == "implicit" && std::holds_alternative<ModifiedCamClay>(material)) {
+      out.push_back({integrator, material, integrator});
+      for (double tolerance : options.implicit_tolerances) {
+        std::ostringstream label;
+        label << "implicit(" << tolerance << ')';
+        out.push_back({integrator, with_implicit_tolerance(material, tolerance), label.str()});
+      }
+      continue;
+    }
     if (integrator != "substep") {
       out.push_back({integrator, material, integrator});
       continue;

@@ -26,6 +26,8 @@ struct WorkPrecisionOptions {
   /// Schemes; "substep" is run once per tolerance below and labelled e.g. "substep(1e-06)".
   std::vector<std::string> integrators = {"explicit", "substep", "implicit"};
   std::vector<double> substep_tolerances = {1e-4, 1e-6, 1e-8};
+  /// "implicit" also runs once per MCC `implicit_tolerance` here (labelled e.g. "implicit(0.001)").
+  std::vector<double> implicit_tolerances = {1e-2, 1e-3, 1e-4};
   double min_seconds = 0.02;  ///< repeat a path until this much CPU time (at least 3, at most 200 times)
 };
 

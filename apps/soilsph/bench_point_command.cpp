@@ -27,6 +27,7 @@ void add_bench_command(CLI::App& app) {
     std::string data = ".";
     std::vector<int> increments;
     double min_seconds = 0.02;
+    std::string only;
   };
   auto o = std::make_shared<Options>();
   point->add_option("--out", o->out, "output directory (work_precision.csv)")->capture_default_str();
@@ -35,6 +36,8 @@ void add_bench_command(CLI::App& app) {
       ->delimiter(',');
   point->add_option("--min-seconds", o->min_seconds, "CPU time to spend per measurement (median of repeats)")
       ->capture_default_str();
+  point->add_option("--case", o->only,
+                    "run one case: mcc-table1, dp-table1, mcc-kp-200kPa, mcc-kp-200kPa-ocr1.5 (default all)");
   point->callback([o] {
     using namespace verification;
     WorkPrecisionOptions options;
@@ -42,11 +45,33 @@ void add_bench_command(CLI::App& app) {
     options.min_seconds = o->min_seconds;
     std::filesystem::create_directories(o->out);
     std::vector<WorkPrecisionRow> rows;
-    for (const char* name : {"mcc-table1", "dp-table1"}) {
-      const Material material = table1_material(o->data, name);
+    // The Table 1 soils (MCC with constant E = 1 MPa) from 100 kPa, NC; then the Table 1 clay with
+    // K = (1+e0)p/kappa (21x stiffer at 200 kPa) from 200 kPa, NC and OCR 1.5 (issue #11).
+    struct Case {
+      std::string label, file;
+      bool pressure_dependent;
+      double p_initial, ocr;
+    };
+    const std::vector<Case> cases = {{"mcc-table1", "mcc-table1", false, 100e3, 1.0},
+                                     {"dp-table1", "dp-table1", false, 100e3, 1.0},
+                                     {"mcc-kp-200kPa", "mcc-table1", true, 200e3, 1.0},
+                                     {"mcc-kp-200kPa-ocr1.5", "mcc-table1", true, 200e3, 1.5}};
+    for (const Case& c : cases) {
+      if (!o->only.empty() && o->only != c.label) continue;
+      Material material = table1_material(o->data, c.file);
+      if (c.pressure_dependent)
+        material = with_edited_params(material, [](auto& params) {
+          if constexpr (requires { params.elasticity; }) {
+            params.elasticity = Elasticity::Kind::PressureDependent;
+            params.elastic_pressure_floor = 1e3;
+          }
+        });
+      const std::string name = c.label;
       for (LoadPath path : {LoadPath::TriaxialDrained, LoadPath::TriaxialUndrained, LoadPath::Oedometer}) {
-        PointTest test;  // p_initial 100 kPa, OCR 1, to eps_a = 0.1
+        PointTest test;  // to eps_a = 0.1
         test.path = path;
+        test.p_initial = c.p_initial;
+        test.ocr = c.ocr;
         const auto part = work_precision(name, material, test, options, [](const WorkPrecisionRow& r) {
           std::printf("%-11s %-19s %-15s %6d  err_q %.3e  err_p %.3e  %.3e s\n", r.material.c_str(),
                       r.path.c_str(), r.integrator.c_str(), r.increments, r.error_q, r.error_p,

@@ -1,7 +1,9 @@
 #include "constitutive/integrators/implicit_cam_clay.h"
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "constitutive/integrators/integrator.h"
 
@@ -325,7 +327,8 @@ class CamClayReturn {
 /// The plastic return of an increment whose elastic trial (`trial`, evaluated with any entry: at
 /// Δλ = 0 only its entry-free fields are read) is outside the surface.
 State plastic_return(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
-                     const YieldEntry& entry, const CamClayReturn::Point& trial, Mat6* tangent) {
+                     const YieldEntry& entry, const CamClayReturn::Point& trial, Mat6* tangent,
+                     double* local_error) {
   const CamClayReturn eqs(model, start, strain_increment, model.implicit_alpha(), entry);
   // Outer safeguarded Newton on Δλ: f > 0 on [0, lo], f < 0 at hi once found.
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
@@ -368,12 +371,31 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Mat
                                       x.we() * model.flow_direction(next.stress, next.pc));
   next.plastic_multiplier = x.l;
   if (tangent) *tangent = eqs.tangent(x, true);
+  if (local_error) {
+    // Half the difference between the stress and p_c changes of forward and backward Euler, whose
+    // flows are Δλ n(σ_t) and Δλ n(σ_{n+1}) (Sloan, Abbo & Sheng 2001, with implicit ends): D:Δn
+    // = −K_t M² Δn_p I + 6G (s − s_t), Δn_p = (2p − p_c) − (2p_t − p_c,n); dp_c/p_c = θ Δλ M² Δn_p.
+    const double dn_p = (2.0 * x.p - x.pc) - (2.0 * entry.p - start.pc);
+    const Mat3 ds = deviator(next.stress) - entry.s;
+    const double dn_stress =
+        std::sqrt(3.0 * std::pow(x.Kt * eqs.M2() * dn_p, 2) + 36.0 * x.G * x.G * ddot(ds, ds));
+    const double scale = std::max({std::sqrt(ddot(next.stress, next.stress)),
+                                   std::sqrt(ddot(start.stress, start.stress)), 1.0});
+    *local_error = 0.5 * x.l *
+                   std::max(dn_stress / scale, model.hardening_exponent() * eqs.M2() * std::abs(dn_p));
+  }
   return next;
 }
+
+/// Accepted sub-increments as fractions of the increment: one when the increment is not split.
+using Schedule = std::vector<double>;
+constexpr int kMaxSubincrements = 10000;
+constexpr double kMinFraction = 1e-6;  ///< smallest sub-increment, as a fraction of the increment
 }  // namespace
 
-State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
-                      Mat6* tangent) {
+State implicit_return(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
+                      Mat6* tangent, double* local_error) {
+  if (local_error) *local_error = 0.0;
   if (!(start.pc > 0.0)) throw IntegrationError("implicit (modified-cam-clay): p_c must be positive");
   // The elastic trial (Δλ = 0: the flow weights and the entry play no part).
   const YieldEntry start_entry = YieldEntry::at(start);
@@ -387,7 +409,77 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
     return next;
   }
   return plastic_return(model, start, strain_increment, yield_entry(model, start, strain_increment), trial,
-                        tangent);
+                        tangent, local_error);
+}
+
+namespace {
+/// The returns of `schedule` in turn (the frozen sub-increments of a controlled update).
+State run_schedule(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
+                   const Schedule& schedule) {
+  State state = start;
+  double multiplier = 0.0;
+  for (double fraction : schedule) {
+    state = implicit_return(model, state, fraction * strain_increment);
+    multiplier += state.plastic_multiplier;
+  }
+  state.plastic_multiplier = multiplier;
+  return state;
+}
+}  // namespace
+
+State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
+                      Mat6* tangent) {
+  const double tolerance = model.implicit_tolerance();
+  if (!(tolerance > 0.0)) return implicit_return(model, start, strain_increment, tangent);
+  // Error control (Sloan, Abbo & Sheng 2001, with implicit sub-increments): try the whole rest of the
+  // increment; accept when the local error estimate R ≤ tolerance, else shrink by 0.9 √(tol/R)
+  // (R is second order in the sub-increment), at least 10×; after an acceptance grow by at most 2×.
+  Schedule schedule;
+  State state = start;
+  double done = 0.0, fraction = 1.0, multiplier = 0.0;
+  Mat6 first_tangent;
+  while (true) {
+    const double rest = 1.0 - done;
+    const bool last = fraction >= rest;
+    if (last) fraction = rest;
+    double error = 0.0;
+    const bool whole = schedule.empty() && last;
+    const State next = implicit_return(model, state, last && schedule.empty() ? strain_increment
+                                                                             : fraction * strain_increment,
+                                       whole && tangent ? &first_tangent : nullptr, &error);
+    const double factor = error > 0.0 ? 0.9 * std::sqrt(tolerance / error) : 2.0;
+    if (error <= tolerance || fraction <= kMinFraction) {
+      schedule.push_back(fraction);
+      state = next;
+      multiplier += next.plastic_multiplier;
+      if (last) break;
+      if (static_cast<int>(schedule.size()) >= kMaxSubincrements)
+        throw IntegrationError("implicit (modified-cam-clay): more than 10000 sub-increments in one increment");
+      done += fraction;
+      fraction = std::max(fraction * std::min(factor, 2.0), kMinFraction);
+    } else {
+      fraction = std::max(fraction * std::clamp(factor, 0.1, 0.9), kMinFraction);
+    }
+  }
+  state.plastic_multiplier = multiplier;
+  if (tangent) {
+    if (schedule.size() == 1) {
+      *tangent = first_tangent;
+    } else {
+      // The derivative of the composed returns with the sub-increments frozen (the schedule is
+      // piecewise constant in Δε), by central differences as in finite_difference_tangent.
+      const Vec6 base = strain_to_voigt(strain_increment);
+      const double h = std::max(1e-7 * base.norm(), 1e-10);
+      for (int k = 0; k < 6; ++k) {
+        Vec6 plus = base, minus = base;
+        plus(k) += h, minus(k) -= h;
+        const Mat3 s_plus = run_schedule(model, start, strain_from_voigt(plus), schedule).stress;
+        const Mat3 s_minus = run_schedule(model, start, strain_from_voigt(minus), schedule).stress;
+        tangent->col(k) = (stress_to_voigt(s_plus) - stress_to_voigt(s_minus)) / (2.0 * h);
+      }
+    }
+  }
+  return state;
 }
 
 }  // namespace soilsph

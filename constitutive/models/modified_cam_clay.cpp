@@ -29,6 +29,7 @@ ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
   p.integrator = read_integrator(t, kDefaultIntegrator);
   p.substep_tolerance = read_substep_tolerance(t);
   p.implicit_alpha = t.number_or("implicit_alpha", kDefaultImplicitAlpha, Range::closed(0.5, 1.0));
+  p.implicit_tolerance = t.number_or("implicit_tolerance", 0.0, Range::closed(0.0, 1e-2));
   return p;
 }
 
@@ -93,7 +94,10 @@ Mat6 ModifiedCamClay::consistent_tangent(const State& state, const Mat3& strain_
   // first order in the increment: one update for a Newton tangent instead of the 12 of differences.
   if (integrator() == Integrator::Explicit) return finite_difference_tangent(*this, state, strain_increment);
   Mat6 tangent;
-  implicit_update(*this, state, strain_increment, &tangent);
+  if (integrator() == Integrator::Implicit)
+    implicit_update(*this, state, strain_increment, &tangent);
+  else
+    implicit_return(*this, state, strain_increment, &tangent);
   return tangent;
 }
 

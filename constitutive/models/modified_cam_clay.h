@@ -34,6 +34,9 @@ struct ModifiedCamClayParams {
   /// `implicit`: generalised-midpoint parameter α of the flow rule, ½ (midpoint, second order) to 1
   /// (backward Euler, first order).
   double implicit_alpha = kDefaultImplicitAlpha;
+  /// `implicit`: local error tolerance of the error-controlled sub-incrementation (relative stress
+  /// change, see implicit_update in implicit_cam_clay.h); 0 (the default) is one return per increment.
+  double implicit_tolerance = 0.0;
 
   static ModifiedCamClayParams read(const TableReader& table);
 };
@@ -50,6 +53,7 @@ class ModifiedCamClay {
   Integrator integrator() const { return params_.integrator; }
   double substep_tolerance() const { return params_.substep_tolerance; }
   double implicit_alpha() const { return params_.implicit_alpha; }
+  double implicit_tolerance() const { return params_.implicit_tolerance; }
   double M() const { return M_; }
   /// (1+e0)/(λ−κ): the hardening exponent per unit plastic volumetric strain (eq 27).
   double hardening_exponent() const { return theta_; }
