@@ -233,7 +233,8 @@ const std::vector<std::string> kMaterialKeyNames = {"model",           "density"
                                                     "swelling_index",  "initial_void_ratio",
                                                     "elasticity",      "elastic_pressure_floor",
                                                     "integrator",      "substep_tolerance",
-                                                    "implicit_alpha",  "plastic_potential"};
+                                                    "implicit_alpha",  "plastic_potential",
+                                                    "implicit_tolerance"};
 
 std::vector<Spec> make_specs() {
   const auto positive = fixed(open(0, kInf));
@@ -366,6 +367,14 @@ std::vector<Spec> make_specs() {
                {},
                {},
                fixed(closed(0.5, 1.0))});
+  s.push_back({"material",
+               "implicit_tolerance",
+               Type::Number,
+               false,
+               {"0", "-1e-300", "1e-3", "0.01", "0.0100001"},
+               {},
+               {},
+               fixed(closed(0.0, 1e-2))});
   // [scene] (sph/scene.cpp, docs/sph.md)
   s.push_back({"scene",
                "column_width",
@@ -561,7 +570,7 @@ bool material_key_used(const toml::table& doc, const std::string& key) {
   if (key == "friction_angle") return dp || mcc;
   if (key == "cohesion" || key == "dilatancy_angle" || key == "plastic_potential") return dp;
   if (key == "compression_index" || key == "swelling_index" || key == "initial_void_ratio" ||
-      key == "elasticity" || key == "implicit_alpha")
+      key == "elasticity" || key == "implicit_alpha" || key == "implicit_tolerance")
     return mcc;
   if (key == "elastic_pressure_floor") return mcc && elasticity == "pressure-dependent";
   if (key == "integrator" || key == "substep_tolerance") return dp || mcc;
