@@ -7,6 +7,7 @@
 #include <string_view>
 #include <variant>
 
+#include "constitutive/model_concept.h"
 #include "constitutive/models/drucker_prager.h"
 #include "constitutive/models/linear_elastic.h"
 #include "constitutive/models/modified_cam_clay.h"
@@ -14,6 +15,8 @@
 namespace soilsph {
 
 using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay>;
+static_assert(ConstitutiveModel<LinearElastic>);
+static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay>);
 
 /// Every key a `[material]` table may hold, whichever model it selects.
 inline constexpr std::string_view kMaterialKeys[] = {

@@ -27,9 +27,7 @@ constexpr int kPorePressure = 13;
 constexpr double kTooClose = 1e-9;
 
 template <class Model>
-constexpr bool kPlastic = requires(const Model& m, const Mat3& s) {
-  m.yield_gradient(s, 0.0);
-};
+constexpr bool kPlastic = PlasticModel<Model>;
 
 /// The rates at one state for one leg and branch (elastic or plastic).
 struct Rates {
