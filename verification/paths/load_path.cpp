@@ -75,16 +75,21 @@ Vec6 driven_strain(LoadPath path, double d) {
 
 }  // namespace
 
-std::string describe_increment(const PointTest& test, std::size_t leg, int increment) {
+std::string describe_leg(const PointTest& test, std::size_t leg) {
   if (test.path == LoadPath::StrainPath) {
     if (leg < test.strain_increment_sources.size()) return test.strain_increment_sources[leg];
     return "row " + std::to_string(leg + 1) + " of the strain path";
   }
   const std::string driven = test.path == LoadPath::Isotropic ? "eps_v" : "eps_a";
   const double from = leg == 0 ? 0.0 : test.strain_targets[leg - 1];
-  return "increment " + std::to_string(increment + 1) + " of " + std::to_string(test.increments) +
-         " of leg " + std::to_string(leg + 1) + " (" + driven + " from " + format_number(from) + " to " +
+  return "leg " + std::to_string(leg + 1) + " (" + driven + " from " + format_number(from) + " to " +
          format_number(test.strain_targets[leg]) + ")";
+}
+
+std::string describe_increment(const PointTest& test, std::size_t leg, int increment) {
+  if (test.path == LoadPath::StrainPath) return describe_leg(test, leg);
+  return "increment " + std::to_string(increment + 1) + " of " + std::to_string(test.increments) + " of " +
+         describe_leg(test, leg);
 }
 
 Leg resolve_leg(const Leg& leg, const PointSample& start) {

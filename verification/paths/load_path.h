@@ -48,6 +48,9 @@ Leg resolve_leg(const Leg& leg, const PointSample& start);
 ///  - strain-path:        every strain component imposed, one increment per given tensor.
 std::vector<Leg> build_legs(const PointTest& test);
 
+/// Names leg `leg` (from 0) of `test`: "leg 2 (eps_a from 0.1 to 0.05)", or a strain-path row's
+/// "FILE:LINE" (test.strain_increment_sources) or "row N of the strain path".
+std::string describe_leg(const PointTest& test, std::size_t leg);
 /// Names increment `increment` of leg `leg` (both from 0) of `test` for messages: the strain-path
 /// row's "FILE:LINE" (test.strain_increment_sources) or "row N of the strain path", else e.g.
 /// "increment 3 of 100 of leg 2 (eps_a from 0.1 to 0.05)".

@@ -94,11 +94,7 @@ Programme programme_of(const Material& material, const PointTest& test) {
   programme.initial.stress = isotropic_stress(test.p_initial);
   programme.initial.pc = initial_preconsolidation(material, programme.initial.stress, test.ocr);
   programme.legs_are_rows = test.path == LoadPath::StrainPath;
-  for (std::size_t l = 0; l < programme.legs.size(); ++l) {
-    // describe_increment's text after "increment k of N of " (or the whole of it for a row).
-    const std::string text = describe_increment(test, l, 0);
-    programme.leg_names.push_back(programme.legs_are_rows ? text : text.substr(text.find("leg ")));
-  }
+  for (std::size_t l = 0; l < programme.legs.size(); ++l) programme.leg_names.push_back(describe_leg(test, l));
   return programme;
 }
 
