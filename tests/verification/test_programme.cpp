@@ -9,7 +9,6 @@
 #include <numbers>
 
 #include "constitutive/parameters.h"
-#include "tests/common/table1_materials.h"
 #include "verification/programme/programme_file.h"
 
 using namespace soilsph;
@@ -125,16 +124,8 @@ TEST_CASE("a built-in test is a programme: --test and its programme file give th
   test.ocr = 1.5;
   test.strain_targets = {0.05, 0.02};
   test.increments = 20;
-  const Material mcc = test::table1_cam_clay();
   const std::string text = R"(
-[material]
-model = "modified-cam-clay"
-density = 2000.0
-poisson_ratio = 0.3
-friction_angle = 35.0
-compression_index = 0.085
-swelling_index = 0.019
-initial_void_ratio = 0.68
+material = ")" + kSource + R"(/verification/cases/materials/mcc-pressure-dependent.toml"
 [initial]
 p = 150e3
 ocr = 1.5
@@ -145,7 +136,7 @@ strain = { xx = [0.05, 0.02] }
 stress = { yy = "hold", zz = "hold" }
 )";
   const ProgrammeFile file = read_programme_file(write_file("builtin", text).string());
-  const PointCurve a = run_point_test(mcc, test, "implicit");
+  const PointCurve a = run_point_test(file.material, test, "implicit");
   const PointCurve b = run_programme(file.material, file.programme, "implicit");
   CHECK(curve_difference(a, b) < 1e-12);
 }
