@@ -47,4 +47,25 @@ double density(const Material& material) {
   return std::visit([](const auto& model) { return model.params().density; }, material);
 }
 
+bool has_preconsolidation(const Material& material) {
+  return std::visit([](const auto& model) { return std::decay_t<decltype(model)>::kHasPreconsolidation; }, material);
+}
+
+namespace {
+template <class... Model>
+std::string names_with_preconsolidation(const std::variant<Model...>*) {
+  std::string names;
+  ((Model::kHasPreconsolidation ? names += (names.empty() ? "" : ", ") + std::string(Model::kName) : names), ...);
+  return names;
+}
+}  // namespace
+
+std::string preconsolidation_models() {
+  return names_with_preconsolidation(static_cast<const Material*>(nullptr));
+}
+
+double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr) {
+  return std::visit([&](const auto& model) { return model.initial_preconsolidation(sigma, ocr); }, material);
+}
+
 }  // namespace soilsph

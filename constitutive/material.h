@@ -51,4 +51,12 @@ Material with_edited_params(const Material& material, Edit edit) {
 std::string_view model_name(const Material& material);
 double density(const Material& material);
 
+/// Whether the model has a preconsolidation pressure, i.e. whether an OCR applies to it.
+bool has_preconsolidation(const Material& material);
+/// The names of the models that have one, for messages: "modified-cam-clay".
+std::string preconsolidation_models();
+/// The model's initial hardening state at effective stress `sigma` (tension-positive) with
+/// overconsolidation ratio `ocr` (its initial_preconsolidation hook; 0 for models without one).
+double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr);
+
 }  // namespace soilsph

@@ -8,6 +8,8 @@
 ///              "paper-eq20"         α_ψ = 3 sinψ, the potential as printed (eq 20)
 /// Stresses are tension-positive, so I1 < 0 in compression and the cone's apex is at I1 = k_c/α_φ;
 /// α_ψ > 0 makes the plastic volume grow (dilate).
+#include <string>
+
 #include "constitutive/elasticity.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/parameters.h"
@@ -21,23 +23,30 @@ enum class PlasticPotential {
   Matched,    ///< α_ψ = tanψ/√(9 + 12 tan²ψ): like α_φ of eq 19; ψ = φ is associated flow
   PaperEq20,  ///< α_ψ = 3 sinψ: eq 20 as printed, to reproduce the paper
 };
+inline constexpr PlasticPotential kPlasticPotentials[] = {PlasticPotential::Matched, PlasticPotential::PaperEq20};
+inline constexpr std::string_view kPlasticPotentialNames[] = {"matched", "paper-eq20"};
 std::string_view plastic_potential_name(PlasticPotential potential);
 
+/// The parameters, with the defaults of an input file: a struct built in code runs as the same TOML
+/// with the required keys given (the model's constructor checks every range).
 struct DruckerPragerParams {
   /// Input default: the closed-form return is the cheapest update (48 ns) and as accurate as any
   /// scheme on the work-precision paths (docs/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
-  double density;          ///< kg/m³
-  double young_modulus;    ///< Pa
-  double poisson_ratio;    ///< −
-  double friction_angle;   ///< φ, degrees
-  double cohesion;         ///< c, Pa
-  double dilatancy_angle;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
+  double density = 0.0;          ///< kg/m³ (required)
+  double young_modulus = 0.0;    ///< Pa (required)
+  double poisson_ratio = 0.0;    ///< − (required)
+  double friction_angle = 0.0;   ///< φ, degrees (required)
+  double cohesion = 0.0;         ///< c, Pa
+  double dilatancy_angle = 0.0;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
   PlasticPotential plastic_potential = PlasticPotential::Matched;  ///< how α_ψ follows from ψ
-  Integrator integrator = Integrator::Explicit;
+  Integrator integrator = kDefaultIntegrator;
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
 
   static DruckerPragerParams read(const TableReader& table);
+  /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
+  template <class Io>
+  void fields(const Io& io);
 };
 
 class DruckerPrager {
@@ -69,6 +78,17 @@ class DruckerPrager {
   /// Perfect plasticity: no hardening.
   double hardening_modulus(const Mat3&, double) const { return 0.0; }
   double harden(double pc, const Mat3& /*d_plastic_strain*/) const { return pc; }
+  /// No hardening variable: an OCR has nothing to set, p_c stays 0.
+  static constexpr bool kHasPreconsolidation = false;
+  double initial_preconsolidation(const Mat3&, double /*ocr*/, double /*floor*/ = 0.0) const { return 0.0; }
+  /// ṗ_c of the rate equations (CVODE reference): none.
+  double hardening_rate(const Mat3&, double, double /*lambda_dot*/, const Mat3& /*n_g*/) const { return 0.0; }
+  /// The stress test's mark: a plastic state at the apex (s = 0).
+  StateMarks marks(const State& s) const {
+    return {s.plastic_multiplier > 0.0 && second_deviatoric_invariant(s.stress) == 0.0, false, false};
+  }
+  /// The derived constants, one "  name = value" line each (`soilsph material`).
+  std::string describe_constants() const;
   /// The paper's stress correction: tension cracking beyond the apex (eq 30–31, apex at
   /// I1 = k_c/α_φ) then scaling of the deviator back to the cone (eq 32–33).
   Mat3 correct(const Mat3& sigma, double pc = 0.0) const;

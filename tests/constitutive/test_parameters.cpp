@@ -267,3 +267,44 @@ TEST_CASE("a described material reads back to the same parameters", "[parameters
   CHECK(describe_material(read_back(elastic)) ==
         "model = \"linear-elastic\"; density = 1500; young_modulus = 0.1; poisson_ratio = -0.2");
 }
+
+// A model built in code goes through the same ranges and defaults as one read from TOML.
+TEST_CASE("a model built in code from bad parameters throws, naming the key", "[parameters]") {
+  DruckerPrager::Params dp;
+  dp.density = 2000.0, dp.young_modulus = 1.0e6, dp.poisson_ratio = 0.3, dp.friction_angle = 30.0;
+  CHECK_NOTHROW(DruckerPrager(dp));
+  dp.dilatancy_angle = 31.0;  // ψ > φ
+  CHECK_THROWS_WITH(DruckerPrager(dp), Contains("drucker-prager parameters: dilatancy_angle = 31") &&
+                                           Contains("0 <= value <= 30 degrees"));
+  dp.dilatancy_angle = 0.0, dp.poisson_ratio = 0.5;
+  CHECK_THROWS_AS(DruckerPrager(dp), ParameterError);
+  CHECK_THROWS_WITH(DruckerPrager(dp), Contains("poisson_ratio = 0.5"));
+
+  ModifiedCamClay::Params mcc;
+  mcc.density = 2000.0, mcc.poisson_ratio = 0.3, mcc.friction_angle = 35.0;
+  mcc.compression_index = 0.085, mcc.swelling_index = 0.019, mcc.initial_void_ratio = 0.68;
+  CHECK_NOTHROW(ModifiedCamClay(mcc));
+  mcc.swelling_index = 0.085;  // κ = λ
+  CHECK_THROWS_WITH(ModifiedCamClay(mcc), Contains("modified-cam-clay parameters: swelling_index = 0.085") &&
+                                              Contains("0 < value < 0.085"));
+  mcc.swelling_index = 0.019, mcc.elasticity = Elasticity::Kind::Constant;  // E is then required
+  CHECK_THROWS_WITH(ModifiedCamClay(mcc), Contains("young_modulus = 0"));
+  CHECK_THROWS_WITH(LinearElastic(LinearElastic::Params{}), Contains("linear-elastic parameters: density = 0"));
+}
+
+TEST_CASE("a model built in code has the defaults of an input file", "[parameters]") {
+  const DruckerPrager::Params dp_code;
+  const auto& dp_toml = std::get<DruckerPrager>(from_text(
+      "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\nyoung_modulus = 1.0e6\n"
+      "poisson_ratio = 0.3\nfriction_angle = 35.0\n")).params();
+  CHECK(dp_code.integrator == dp_toml.integrator);
+  CHECK(dp_code.integrator == Integrator::Implicit);
+  CHECK(std::tie(dp_code.cohesion, dp_code.dilatancy_angle, dp_code.plastic_potential, dp_code.substep_tolerance) ==
+        std::tie(dp_toml.cohesion, dp_toml.dilatancy_angle, dp_toml.plastic_potential, dp_toml.substep_tolerance));
+  const ModifiedCamClay::Params mcc_code;
+  const auto& mcc_toml = std::get<ModifiedCamClay>(from_text(kCamClay)).params();
+  CHECK(std::tie(mcc_code.integrator, mcc_code.elasticity, mcc_code.elastic_pressure_floor,
+                 mcc_code.substep_tolerance, mcc_code.implicit_alpha, mcc_code.implicit_tolerance) ==
+        std::tie(mcc_toml.integrator, mcc_toml.elasticity, mcc_toml.elastic_pressure_floor,
+                 mcc_toml.substep_tolerance, mcc_toml.implicit_alpha, mcc_toml.implicit_tolerance));
+}

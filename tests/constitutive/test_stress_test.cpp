@@ -11,7 +11,7 @@ TEST_CASE("stress test: 1e5 random increments per model and integrator keep ever
   options.increments = 100000;
   options.seed = 20261124;
   for (const auto& [name, material] : stress_test_materials()) {
-    for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
+    for (Integrator scheme : kIntegrators) {
       const StressTestResult r = run_stress_test(material, scheme, options);
       INFO(name << ", " << integrator_name(scheme) << ": " << r.plastic << " plastic, " << r.extension
                 << " extension, " << r.unloading << " unloading, " << r.at_apex << " at apex, "
