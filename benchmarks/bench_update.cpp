@@ -67,15 +67,12 @@ void register_model(const std::string& name, const Model& base) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const auto materials = stress_test_materials();
-  const std::string short_names[] = {"dp", "dp-cohesive", "mcc", "mcc-constant-E"};
-  for (std::size_t k = 0; k < materials.size(); ++k) {
+  for (const auto& [name, label, material] : stress_test_materials()) {
     std::visit(
         [&](const auto& model) {
-          if constexpr (PlasticModel<std::decay_t<decltype(model)>>)
-            register_model(short_names[k], model);
+          if constexpr (PlasticModel<std::decay_t<decltype(model)>>) register_model(label, model);
         },
-        materials[k].second);
+        material);
   }
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

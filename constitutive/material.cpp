@@ -9,10 +9,11 @@ namespace soilsph {
 
 Material read_material(const TableReader& table) {
   const std::string model =
-      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName});
+      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName, MohrCoulomb::kName});
   const Material material = [&]() -> Material {
     if (model == DruckerPrager::kName) return DruckerPrager(DruckerPrager::Params::read(table));
     if (model == ModifiedCamClay::kName) return ModifiedCamClay(ModifiedCamClay::Params::read(table));
+    if (model == MohrCoulomb::kName) return MohrCoulomb(MohrCoulomb::Params::read(table));
     return LinearElastic(LinearElastic::Params::read(table));
   }();
   check_derived_constants(material, table);

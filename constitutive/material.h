@@ -11,18 +11,20 @@
 #include "constitutive/models/drucker_prager.h"
 #include "constitutive/models/linear_elastic.h"
 #include "constitutive/models/modified_cam_clay.h"
+#include "constitutive/models/mohr_coulomb.h"
 
 namespace soilsph {
 
-using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay>;
+using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay, MohrCoulomb>;
 static_assert(ConstitutiveModel<LinearElastic>);
-static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay>);
+static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay> && PlasticModel<MohrCoulomb>);
 
 /// Every key a `[material]` table may hold, whichever model it selects.
 inline constexpr std::string_view kMaterialKeys[] = {
     "model", "density", "young_modulus", "poisson_ratio", "friction_angle", "cohesion", "dilatancy_angle",
     "compression_index", "swelling_index", "initial_void_ratio", "elasticity", "elastic_pressure_floor",
-    "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential"};
+    "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential",
+    "tension_cutoff"};
 
 /// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
 /// other models are reported on stderr as ignored; keys no model knows are errors.

@@ -61,6 +61,21 @@ Parameters parameters(const ModifiedCamClay& m) {
   out.emplace_back("implicit_tolerance", number(p.implicit_tolerance));
   return out;
 }
+Parameters parameters(const MohrCoulomb& m) {
+  const auto& p = m.params();
+  Parameters out;
+  add_common(out, MohrCoulomb::kName, p.density);
+  out.emplace_back("young_modulus", number(p.young_modulus));
+  out.emplace_back("poisson_ratio", number(p.poisson_ratio));
+  out.emplace_back("friction_angle", number(p.friction_angle));
+  out.emplace_back("cohesion", number(p.cohesion));
+  out.emplace_back("dilatancy_angle", number(p.dilatancy_angle));
+  out.emplace_back("integrator", quoted(integrator_name(p.integrator)));
+  out.emplace_back("substep_tolerance", number(p.substep_tolerance));
+  if (p.tension_cutoff != MohrCoulomb::Params::kNoTensionCutoff)  // absent: none
+    out.emplace_back("tension_cutoff", number(p.tension_cutoff));
+  return out;
+}
 }  // namespace
 
 std::string exact_number(double x) {

@@ -126,6 +126,11 @@ class FieldReader {
   void number_or(std::string_view key, double& field, Range range, std::string_view unit = "") const {
     field = table_.number_or(key, field, range, unit);
   }
+  /// An optional key without a default value: absent, the field keeps +∞ ("none").
+  void number_if_given(std::string_view key, double& field, Range range, std::string_view unit = "") const {
+    if (table_.has(key)) field = table_.number(key, range, unit);
+    else table_.accept({key});
+  }
   /// An optional key naming one of `values` by the name at the same place in `names`.
   template <class Enum>
   void choice_or(std::string_view key, Enum& field, std::span<const std::string_view> names,
@@ -149,6 +154,9 @@ class FieldChecker {
   void number(std::string_view key, const double& field, Range range, std::string_view unit = "") const;
   void number_or(std::string_view key, const double& field, Range range, std::string_view unit = "") const {
     number(key, field, range, unit);
+  }
+  void number_if_given(std::string_view key, const double& field, Range range, std::string_view unit = "") const {
+    if (field != std::numeric_limits<double>::infinity()) number(key, field, range, unit);
   }
   /// An enum value is always one of its names.
   template <class Enum>

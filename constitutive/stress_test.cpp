@@ -145,7 +145,7 @@ StressTestResult run_stress_test(const Material& material, Integrator integrator
       material);
 }
 
-std::vector<std::pair<std::string, Material>> stress_test_materials() {
+std::vector<StressTestMaterial> stress_test_materials() {
   DruckerPrager::Params dp{};  // Table 1
   dp.density = 2000.0, dp.young_modulus = 1.0e6, dp.poisson_ratio = 0.3, dp.friction_angle = 35.0;
   dp.cohesion = 0.0, dp.dilatancy_angle = 0.0;
@@ -158,10 +158,17 @@ std::vector<std::pair<std::string, Material>> stress_test_materials() {
   mcc.young_modulus = 1.0e6, mcc.elastic_pressure_floor = 1.0e3;
   ModifiedCamClay::Params mcc_constant = mcc;
   mcc_constant.elasticity = Elasticity::Kind::Constant;
-  return {{"drucker-prager (Table 1, c = 0, psi = 0)", DruckerPrager(dp)},
-          {"drucker-prager (c = 5 kPa, psi = 10 deg)", DruckerPrager(dp_cohesive)},
-          {"modified-cam-clay (Table 1, pressure-dependent K)", ModifiedCamClay(mcc)},
-          {"modified-cam-clay (Table 1, constant E)", ModifiedCamClay(mcc_constant)}};
+  MohrCoulomb::Params mc{};  // the Table 1 soil's E, ν, φ
+  mc.density = 2000.0, mc.young_modulus = 1.0e6, mc.poisson_ratio = 0.3, mc.friction_angle = 35.0;
+  mc.cohesion = 5e3, mc.dilatancy_angle = 10.0;
+  MohrCoulomb::Params mc_cutoff = mc;
+  mc_cutoff.tension_cutoff = 2e3;
+  return {{"drucker-prager (Table 1, c = 0, psi = 0)", "dp", DruckerPrager(dp)},
+          {"drucker-prager (c = 5 kPa, psi = 10 deg)", "dp-cohesive", DruckerPrager(dp_cohesive)},
+          {"modified-cam-clay (Table 1, pressure-dependent K)", "mcc", ModifiedCamClay(mcc)},
+          {"modified-cam-clay (Table 1, constant E)", "mcc-constant-E", ModifiedCamClay(mcc_constant)},
+          {"mohr-coulomb (c = 5 kPa, psi = 10 deg)", "mc", MohrCoulomb(mc)},
+          {"mohr-coulomb (c = 5 kPa, psi = 10 deg, T = 2 kPa)", "mc-cutoff", MohrCoulomb(mc_cutoff)}};
 }
 
 }  // namespace soilsph
