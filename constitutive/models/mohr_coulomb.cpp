@@ -118,7 +118,7 @@ State MohrCoulomb::update(const State& state, const Mat3& strain_increment, cons
 }
 
 Mat6 MohrCoulomb::consistent_tangent(const State& state, const Mat3& strain_increment) const {
-  if (integrator() == Integrator::Explicit) return finite_difference_tangent(*this, state, strain_increment);
+  if (integrator() != Integrator::Implicit) return finite_difference_tangent(*this, state, strain_increment);
   Mat6 tangent;
   implicit_update(*this, state, strain_increment, &tangent);
   return tangent;

@@ -103,8 +103,9 @@ class MohrCoulomb {
   std::string describe_constants() const;
 
   State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
-  /// ∂σ/∂Δε of update() without spin: central differences for `explicit`; the analytic consistent
-  /// tangent of `implicit` for `implicit` and `substep`.
+  /// ∂σ/∂Δε of update() without spin: the analytic consistent tangent for `implicit`; central
+  /// differences of the update for `explicit` and `substep` (substep's stages do not follow an edge
+  /// as the return does, and the implicit tangent there stalled the undrained extension's Newton).
   Mat6 consistent_tangent(const State& state, const Mat3& strain_increment) const;
 
  private:
