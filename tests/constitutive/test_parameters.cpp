@@ -48,6 +48,10 @@ TEST_CASE("the shipped Table 1 materials load", "[parameters]") {
   CHECK(model_name(mcc) == "modified-cam-clay");
   CHECK(density(mcc) == 2000.0);
   CHECK(std::get<ModifiedCamClay>(mcc).params().swelling_index == 0.019);
+  const Material mc = load_material(SOILSPH_SOURCE_DIR "/data/materials/mc-table1.toml");
+  CHECK(model_name(mc) == "mohr-coulomb");
+  CHECK(std::get<MohrCoulomb>(mc).params().friction_angle == std::get<DruckerPrager>(dp).params().friction_angle);
+  CHECK(!std::get<MohrCoulomb>(mc).has_tension_cutoff());
 }
 
 TEST_CASE("invalid parameters are rejected with file, key and range", "[parameters]") {
@@ -84,7 +88,7 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
       {replace(kCamClay, "density = 2000.0\n", ""), "[material] density: is missing"},
       {replace(kCamClay, "model = \"modified-cam-clay\"", "model = \"cam-clay\""),
        "[material] model = \"cam-clay\" is not allowed (allowed: \"linear-elastic\", \"drucker-prager\", "
-       "\"modified-cam-clay\")"},
+       "\"modified-cam-clay\", \"mohr-coulomb\")"},
       {kDruckerPrager + "integrator = \"rk4\"\n", "[material] integrator = \"rk4\" is not allowed"},
       {kCamClay + "elasticity = \"nonlinear\"\n", "[material] elasticity = \"nonlinear\" is not allowed"},
       {kDruckerPrager + "plastic_potential = \"eq20\"\n",
@@ -307,4 +311,19 @@ TEST_CASE("a model built in code has the defaults of an input file", "[parameter
                  mcc_code.substep_tolerance, mcc_code.implicit_alpha, mcc_code.implicit_tolerance) ==
         std::tie(mcc_toml.integrator, mcc_toml.elasticity, mcc_toml.elastic_pressure_floor,
                  mcc_toml.substep_tolerance, mcc_toml.implicit_alpha, mcc_toml.implicit_tolerance));
+}
+
+TEST_CASE("mohr-coulomb reads the D-P keys and an optional tension cut-off", "[parameters][mohr-coulomb]") {
+  const std::string mc = replace(kDruckerPrager, "model = \"drucker-prager\"", "model = \"mohr-coulomb\"");
+  const auto& plain = std::get<MohrCoulomb>(from_text(mc));
+  CHECK(plain.params().tension_cutoff == MohrCoulomb::Params::kNoTensionCutoff);
+  CHECK(plain.integrator() == Integrator::Implicit);
+  CHECK(std::get<MohrCoulomb>(from_text(mc + "tension_cutoff = 1000.0\n")).tension_cutoff() == 1000.0);
+  CHECK_THROWS_WITH(from_text(mc + "tension_cutoff = -1.0\n"), Contains("[material] tension_cutoff = -1"));
+  CHECK_THROWS_WITH(from_text(replace(mc, "dilatancy_angle = 0.0", "dilatancy_angle = 40.0")),
+                    Contains("[material] dilatancy_angle = 40"));
+  // What a result records of it reads back (the cut-off only when given).
+  CHECK(describe_material(from_text(mc)).find("tension_cutoff") == std::string::npos);
+  CHECK(describe_material(from_text(mc + "tension_cutoff = 1000.0\n")).find("tension_cutoff = 1000") !=
+        std::string::npos);
 }
