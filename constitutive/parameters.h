@@ -167,6 +167,15 @@ class FieldChecker {
   std::string_view owner_;
 };
 
+/// A Params struct read from `table` through its fields() list (the struct's initial values are the
+/// defaults of optional keys).
+template <class Params>
+Params read_fields(const TableReader& table) {
+  Params params;
+  params.fields(FieldReader(table));
+  return params;
+}
+
 /// `params` after checking every field against its range (Params::fields with a FieldChecker);
 /// `owner` names the model in the message. For constructors: `params_(validated(params, kName))`.
 template <class Params>

@@ -21,22 +21,13 @@ std::string_view plastic_potential_name(PlasticPotential potential) {
 
 template <class Io>
 void DruckerPragerParams::fields(const Io& io) {
-  io.number("density", density, Range::positive(), "kg/m^3");
-  io.number("young_modulus", young_modulus, limits::young_modulus_range(), "Pa");
-  io.number("poisson_ratio", poisson_ratio, Range::open(-1.0, 0.5));
-  io.number("friction_angle", friction_angle, Range::open(0.0, 90.0), "degrees");
-  io.number_or("cohesion", cohesion, Range::closed(0.0, limits::kMaxStress), "Pa");
-  io.number_or("dilatancy_angle", dilatancy_angle, Range::closed(0.0, friction_angle), "degrees");
+  frictional_fields(io, *this);
   io.choice_or("plastic_potential", plastic_potential, kPlasticPotentialNames, kPlasticPotentials);
   io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
 }
 
-DruckerPragerParams DruckerPragerParams::read(const TableReader& t) {
-  DruckerPragerParams p;
-  p.fields(FieldReader(t));
-  return p;
-}
+DruckerPragerParams DruckerPragerParams::read(const TableReader& t) { return read_fields<DruckerPragerParams>(t); }
 
 DruckerPrager::DruckerPrager(const Params& params)
     : params_(validated(params, kName)),

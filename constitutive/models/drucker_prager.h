@@ -12,6 +12,7 @@
 
 #include "constitutive/elasticity.h"
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/models/perfect_plasticity.h"
 #include "constitutive/parameters.h"
 #include "constitutive/state.h"
 #include "constitutive/voigt.h"
@@ -29,16 +30,10 @@ std::string_view plastic_potential_name(PlasticPotential potential);
 
 /// The parameters, with the defaults of an input file: a struct built in code runs as the same TOML
 /// with the required keys given (the model's constructor checks every range).
-struct DruckerPragerParams {
+struct DruckerPragerParams : FrictionalParams {
   /// Input default: the closed-form return is the cheapest update (48 ns) and as accurate as any
   /// scheme on the work-precision paths (docs/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
-  double density = 0.0;          ///< kg/m³ (required)
-  double young_modulus = 0.0;    ///< Pa (required)
-  double poisson_ratio = 0.0;    ///< − (required)
-  double friction_angle = 0.0;   ///< φ, degrees (required)
-  double cohesion = 0.0;         ///< c, Pa
-  double dilatancy_angle = 0.0;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
   PlasticPotential plastic_potential = PlasticPotential::Matched;  ///< how α_ψ follows from ψ
   Integrator integrator = kDefaultIntegrator;
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
@@ -49,7 +44,7 @@ struct DruckerPragerParams {
   void fields(const Io& io);
 };
 
-class DruckerPrager {
+class DruckerPrager : public PerfectPlasticity {
  public:
   using Params = DruckerPragerParams;
   static constexpr std::string_view kName = "drucker-prager";
@@ -75,18 +70,8 @@ class DruckerPrager {
   Mat3 yield_gradient(const Mat3& sigma, double /*pc*/ = 0.0) const;
   /// ∂g/∂σ = s/(2√J2) + α_ψ I (eq 20 with α_ψ = 3 sinψ as printed, or the matched α_ψ).
   Mat3 flow_direction(const Mat3& sigma, double /*pc*/ = 0.0) const;
-  /// Perfect plasticity: no hardening.
-  double hardening_modulus(const Mat3&, double) const { return 0.0; }
-  double harden(double pc, const Mat3& /*d_plastic_strain*/) const { return pc; }
-  /// No hardening variable: an OCR has nothing to set, p_c stays 0.
-  static constexpr bool kHasPreconsolidation = false;
-  double initial_preconsolidation(const Mat3&, double /*ocr*/, double /*floor*/ = 0.0) const { return 0.0; }
-  /// ṗ_c of the rate equations (CVODE reference): none.
-  double hardening_rate(const Mat3&, double, double /*lambda_dot*/, const Mat3& /*n_g*/) const { return 0.0; }
-  /// The stress test's mark: a plastic state at the apex (s = 0).
-  StateMarks marks(const State& s) const {
-    return {s.plastic_multiplier > 0.0 && second_deviatoric_invariant(s.stress) == 0.0, false, false};
-  }
+  // Perfect plasticity: hardening_modulus, harden, hardening_rate, initial_preconsolidation and
+  // marks (the apex) from PerfectPlasticity.
   /// The derived constants, one "  name = value" line each (`soilsph material`).
   std::string describe_constants() const;
   /// The paper's stress correction: tension cracking beyond the apex (eq 30–31, apex at

@@ -21,10 +21,6 @@ std::string LinearElastic::describe_constants() const {
   return out.str();
 }
 
-LinearElasticParams LinearElasticParams::read(const TableReader& t) {
-  LinearElasticParams p;
-  p.fields(FieldReader(t));
-  return p;
-}
+LinearElasticParams LinearElasticParams::read(const TableReader& t) { return read_fields<LinearElasticParams>(t); }
 
 }  // namespace soilsph

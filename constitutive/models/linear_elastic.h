@@ -5,6 +5,7 @@
 #include <string>
 
 #include "constitutive/elasticity.h"
+#include "constitutive/models/perfect_plasticity.h"
 #include "constitutive/parameters.h"
 #include "constitutive/rotation.h"
 
@@ -21,7 +22,7 @@ struct LinearElasticParams {
   void fields(const Io& io);
 };
 
-class LinearElastic {
+class LinearElastic : public NoHardeningVariable {
  public:
   using Params = LinearElasticParams;
   static constexpr std::string_view kName = "linear-elastic";
@@ -31,9 +32,6 @@ class LinearElastic {
 
   const Params& params() const { return params_; }
   const Elasticity& elasticity() const { return elasticity_; }
-  /// No hardening variable: an OCR has nothing to set, p_c stays 0.
-  static constexpr bool kHasPreconsolidation = false;
-  double initial_preconsolidation(const Mat3&, double /*ocr*/, double /*floor*/ = 0.0) const { return 0.0; }
   /// The derived constants, one "  name = value" line each (`soilsph material`).
   std::string describe_constants() const;
 

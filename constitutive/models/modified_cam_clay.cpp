@@ -36,11 +36,7 @@ void ModifiedCamClayParams::fields(const Io& io) {
   io.number_or("implicit_tolerance", implicit_tolerance, Range::closed(0.0, 1e-2));
 }
 
-ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
-  ModifiedCamClayParams p;
-  p.fields(FieldReader(t));
-  return p;
-}
+ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) { return read_fields<ModifiedCamClayParams>(t); }
 
 namespace {
 Elasticity make_elasticity(const ModifiedCamClayParams& p) {

@@ -18,22 +18,13 @@ constexpr double kEqualPrincipal = 1e-12;
 
 template <class Io>
 void MohrCoulombParams::fields(const Io& io) {
-  io.number("density", density, Range::positive(), "kg/m^3");
-  io.number("young_modulus", young_modulus, limits::young_modulus_range(), "Pa");
-  io.number("poisson_ratio", poisson_ratio, Range::open(-1.0, 0.5));
-  io.number("friction_angle", friction_angle, Range::open(0.0, 90.0), "degrees");
-  io.number_or("cohesion", cohesion, Range::closed(0.0, limits::kMaxStress), "Pa");
-  io.number_or("dilatancy_angle", dilatancy_angle, Range::closed(0.0, friction_angle), "degrees");
+  frictional_fields(io, *this);
   io.number_if_given("tension_cutoff", tension_cutoff, Range::closed(0.0, limits::kMaxStress), "Pa");
   io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
 }
 
-MohrCoulombParams MohrCoulombParams::read(const TableReader& t) {
-  MohrCoulombParams p;
-  p.fields(FieldReader(t));
-  return p;
-}
+MohrCoulombParams MohrCoulombParams::read(const TableReader& t) { return read_fields<MohrCoulombParams>(t); }
 
 Principal principal(const Mat3& sigma) {
   const Eigen::SelfAdjointEigenSolver<Mat3> solver(sigma);

@@ -15,6 +15,7 @@
 
 #include "constitutive/elasticity.h"
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/models/perfect_plasticity.h"
 #include "constitutive/parameters.h"
 #include "constitutive/state.h"
 #include "constitutive/voigt.h"
@@ -22,16 +23,10 @@
 namespace soilsph {
 
 /// The parameters, with the defaults of an input file (the constructor checks every range).
-struct MohrCoulombParams {
+struct MohrCoulombParams : FrictionalParams {
   /// Input default: the principal-stress return is exact for this piecewise-linear model.
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
   static constexpr double kNoTensionCutoff = std::numeric_limits<double>::infinity();
-  double density = 0.0;          ///< kg/m³ (required)
-  double young_modulus = 0.0;    ///< Pa (required)
-  double poisson_ratio = 0.0;    ///< − (required)
-  double friction_angle = 0.0;   ///< φ, degrees (required)
-  double cohesion = 0.0;         ///< c, Pa
-  double dilatancy_angle = 0.0;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
   double tension_cutoff = kNoTensionCutoff;  ///< T, Pa, the largest principal stress; ∞: none (the apex)
   Integrator integrator = kDefaultIntegrator;
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
@@ -55,7 +50,7 @@ struct Principal {
 /// The spectral decomposition of a symmetric tensor, eigenvalues in descending order.
 Principal principal(const Mat3& sigma);
 
-class MohrCoulomb {
+class MohrCoulomb : public PerfectPlasticity {
  public:
   using Params = MohrCoulombParams;
   static constexpr std::string_view kName = "mohr-coulomb";
@@ -85,21 +80,15 @@ class MohrCoulomb {
   Mat3 yield_gradient(const Mat3& sigma, double /*pc*/ = 0.0) const;
   /// ∂g/∂σ, as yield_gradient with ψ for φ (the cut-off's flow is associated).
   Mat3 flow_direction(const Mat3& sigma, double /*pc*/ = 0.0) const;
-  double hardening_modulus(const Mat3&, double) const { return 0.0; }
-  double harden(double pc, const Mat3& /*d_plastic_strain*/) const { return pc; }
   /// The correction after an explicit step: the implicit return of σ taken as an elastic trial.
   Mat3 correct(const Mat3& sigma, double pc = 0.0) const;
   /// True when the return of the trial is the apex or meets the tension cut-off, where substep's
   /// explicit stages cannot follow the corner: substep then takes correct(trial).
   bool beyond_tension_cutoff(const Mat3& trial) const;
 
-  static constexpr bool kHasPreconsolidation = false;
-  double initial_preconsolidation(const Mat3&, double /*ocr*/, double /*floor*/ = 0.0) const { return 0.0; }
-  double hardening_rate(const Mat3&, double, double /*lambda_dot*/, const Mat3& /*n_g*/) const { return 0.0; }
-  /// The stress test's mark: a plastic state at the apex (s = 0).
-  StateMarks marks(const State& s) const {
-    return {s.plastic_multiplier > 0.0 && second_deviatoric_invariant(s.stress) == 0.0, false, false};
-  }
+  // Perfect plasticity: hardening_modulus, harden, hardening_rate, initial_preconsolidation and
+  // marks (the apex) from PerfectPlasticity.
+  /// The derived constants, one "  name = value" line each (`soilsph material`).
   std::string describe_constants() const;
 
   State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
