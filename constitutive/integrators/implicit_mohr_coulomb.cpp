@@ -3,7 +3,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <cmath>
-#include <vector>
+#include <vector>  // the static lists of active sets only
 
 namespace soilsph {
 
@@ -43,6 +43,11 @@ const std::vector<ActiveSet>& active_sets(bool cutoff) {
   return cutoff ? with_cutoff : plain;
 }
 
+/// At most three active planes: matrices of fixed capacity, so a return allocates nothing.
+using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+using Columns = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3>;
+using Multipliers = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+
 Mat3 principal_stiffness(const Moduli& D) {
   return (D.K - 2.0 * D.G / 3.0) * Mat3::Ones() + 2.0 * D.G * Mat3::Identity();
 }
@@ -61,18 +66,18 @@ MohrCoulombReturn return_principal(const MohrCoulomb& model, const Vec3& trial, 
   const double tolerance = 1e-10 * scale;
   for (const ActiveSet& set : active_sets(cutoff)) {
     const int n = static_cast<int>(set.planes.size());
-    Eigen::MatrixXd A(n, n), N(3, n), DG(3, n);
-    Eigen::VectorXd f(n);
+    Columns N(3, n), DG(3, n);
+    Multipliers f(n);
     for (int k = 0; k < n; ++k) {
       const Plane& pk = all[set.planes[k]];
       N.col(k) = pk.a;
       DG.col(k) = Dp * pk.g;
       f(k) = pk.a.dot(trial) - pk.b;
     }
-    A = N.transpose() * DG;
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+    const Square A = N.transpose() * DG;
+    const Eigen::FullPivLU<Square> lu(A);
     if (!lu.isInvertible()) continue;
-    const Eigen::VectorXd d_gamma = lu.solve(f);
+    const Multipliers d_gamma = lu.solve(f);
     if ((d_gamma.array() < 0.0).any()) continue;
     const Vec3 sigma = trial - DG * d_gamma;
     if (sigma(0) < sigma(1) - tolerance || sigma(1) < sigma(2) - tolerance) continue;
@@ -86,7 +91,7 @@ MohrCoulombReturn return_principal(const MohrCoulomb& model, const Vec3& trial, 
     if (set.kind == Kind::LeftEdge) r.stress(1) = r.stress(2) = 0.5 * (sigma(1) + sigma(2));
     if (set.planes.size() == 3 && set.planes[0] == 3) r.stress.setConstant(model.tension_cutoff());
     r.multiplier = d_gamma.sum();
-    r.jacobian = Mat3::Identity() - DG * lu.solve(Eigen::MatrixXd(N.transpose()));
+    r.jacobian = Mat3::Identity() - DG * lu.solve(Square(N.transpose()));
     r.plastic_strain = Dp.inverse() * (trial - r.stress);
     return r;
   }
