@@ -4,8 +4,10 @@
 /// driver and programmes, the CVODE reference, the SPH stress stage and initial state, the stress
 /// test, `soilsph material`) calls on a model. Each caller is a template instantiated per model from
 /// one std::visit, so a hook is a direct call, never a virtual one or a lookup by name. A model that
-/// misses a member fails here, at the registration in material.h, not deep inside a driver; and no
-/// caller needs to ask which model it has (no `is_same_v<Model, ...>` outside constitutive/models/).
+/// misses a member fails here, at the registration in material.h, not deep inside a driver; and the
+/// drivers, the SPH solver, the stress test and the apps need not ask which model they have. (What
+/// is model-specific by nature stays so: a closed form describes one model, and the verification
+/// report writes the constants its plots draw for D-P and MCC.)
 ///
 /// Adding a model: a folder's worth of files in constitutive/ (its header and source in models/, its
 /// implicit return in integrators/), then one line in material.h's Material variant and its name

@@ -183,8 +183,7 @@ void run(const PointOptions& o, bool legs_given, bool test_options_given) {
   const Material material = load_point_material(o);
   if (test.ocr != 1.0 && !has_preconsolidation(material))
     throw ParameterError("--ocr " + format_number(test.ocr) + ": OCR applies to " + preconsolidation_models() +
-                         " only (" +
-                         std::string(model_name(material)) + " has no preconsolidation pressure)");
+                         " only (" + std::string(model_name(material)) + " has no preconsolidation pressure)");
   const std::string integrator = integrator_to_run(o, material);
   verification::Programme programme;
   try {
