@@ -24,9 +24,9 @@ Mat3 triaxial(double axial) {
 template <class Model>
 std::pair<Case, Case> cases(const Model& model) {
   State s;
-  if constexpr (std::is_same_v<Model, ModifiedCamClay>) {
+  if constexpr (Model::kHasPreconsolidation) {
     s.stress = isotropic_stress(100e3);
-    s.pc = 100e3;  // normally consolidated: triaxial compression is plastic at once
+    s.pc = model.initial_preconsolidation(s.stress, 1.0);  // NC: triaxial compression is plastic at once
     return {{s, 1e-4 * Mat3::Identity()}, {s, triaxial(1e-4)}};
   } else {
     s.stress = isotropic_stress(20e3);
@@ -37,7 +37,7 @@ std::pair<Case, Case> cases(const Model& model) {
 
 template <class Model>
 void register_model(const std::string& name, const Model& base) {
-  for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
+  for (Integrator scheme : kIntegrators) {
     auto params = base.params();
     params.integrator = scheme;
     const Model model(params);
@@ -67,15 +67,12 @@ void register_model(const std::string& name, const Model& base) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const auto materials = stress_test_materials();
-  const std::string short_names[] = {"dp", "dp-cohesive", "mcc", "mcc-constant-E"};
-  for (std::size_t k = 0; k < materials.size(); ++k) {
+  for (const auto& [name, label, material] : stress_test_materials()) {
     std::visit(
         [&](const auto& model) {
-          if constexpr (!std::is_same_v<std::decay_t<decltype(model)>, LinearElastic>)
-            register_model(short_names[k], model);
+          if constexpr (PlasticModel<std::decay_t<decltype(model)>>) register_model(label, model);
         },
-        materials[k].second);
+        material);
   }
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

@@ -37,6 +37,14 @@ void check(const DruckerPrager& m, const TableReader& t) {
   require(t, "cohesion", p.cohesion, "the apex's I1 = 3c/tan(phi)", m.apex_first_invariant(), "Pa", true);
 }
 
+void check(const MohrCoulomb& m, const TableReader& t) {
+  const auto& p = m.params();
+  check_constant_elasticity(t, p.young_modulus, m.elasticity());
+  require(t, "friction_angle", p.friction_angle, "sin(phi)", m.sin_phi(), "");
+  // The apex c cot(phi), where the pyramid closes; a small φ overflows it.
+  require(t, "cohesion", p.cohesion, "the apex's principal stress c cot(phi)", m.apex_stress(), "Pa", true);
+}
+
 void check(const ModifiedCamClay& m, const TableReader& t) {
   const auto& p = m.params();
   require(t, "friction_angle", p.friction_angle, "M = 6 sin(phi)/(3 - sin(phi)) (eq 26)", m.M(), "");

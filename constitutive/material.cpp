@@ -9,10 +9,11 @@ namespace soilsph {
 
 Material read_material(const TableReader& table) {
   const std::string model =
-      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName});
+      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName, MohrCoulomb::kName});
   const Material material = [&]() -> Material {
     if (model == DruckerPrager::kName) return DruckerPrager(DruckerPrager::Params::read(table));
     if (model == ModifiedCamClay::kName) return ModifiedCamClay(ModifiedCamClay::Params::read(table));
+    if (model == MohrCoulomb::kName) return MohrCoulomb(MohrCoulomb::Params::read(table));
     return LinearElastic(LinearElastic::Params::read(table));
   }();
   check_derived_constants(material, table);
@@ -45,6 +46,27 @@ std::string_view model_name(const Material& material) {
 
 double density(const Material& material) {
   return std::visit([](const auto& model) { return model.params().density; }, material);
+}
+
+bool has_preconsolidation(const Material& material) {
+  return std::visit([](const auto& model) { return std::decay_t<decltype(model)>::kHasPreconsolidation; }, material);
+}
+
+namespace {
+template <class... Model>
+std::string names_with_preconsolidation(const std::variant<Model...>*) {
+  std::string names;
+  ((Model::kHasPreconsolidation ? names += (names.empty() ? "" : ", ") + std::string(Model::kName) : names), ...);
+  return names;
+}
+}  // namespace
+
+std::string preconsolidation_models() {
+  return names_with_preconsolidation(static_cast<const Material*>(nullptr));
+}
+
+double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr) {
+  return std::visit([&](const auto& model) { return model.initial_preconsolidation(sigma, ocr); }, material);
 }
 
 }  // namespace soilsph

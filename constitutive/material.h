@@ -11,18 +11,20 @@
 #include "constitutive/models/drucker_prager.h"
 #include "constitutive/models/linear_elastic.h"
 #include "constitutive/models/modified_cam_clay.h"
+#include "constitutive/models/mohr_coulomb.h"
 
 namespace soilsph {
 
-using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay>;
+using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay, MohrCoulomb>;
 static_assert(ConstitutiveModel<LinearElastic>);
-static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay>);
+static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay> && PlasticModel<MohrCoulomb>);
 
 /// Every key a `[material]` table may hold, whichever model it selects.
 inline constexpr std::string_view kMaterialKeys[] = {
     "model", "density", "young_modulus", "poisson_ratio", "friction_angle", "cohesion", "dilatancy_angle",
     "compression_index", "swelling_index", "initial_void_ratio", "elasticity", "elastic_pressure_floor",
-    "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential"};
+    "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential",
+    "tension_cutoff"};
 
 /// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
 /// other models are reported on stderr as ignored; keys no model knows are errors.
@@ -50,5 +52,13 @@ Material with_edited_params(const Material& material, Edit edit) {
 
 std::string_view model_name(const Material& material);
 double density(const Material& material);
+
+/// Whether the model has a preconsolidation pressure, i.e. whether an OCR applies to it.
+bool has_preconsolidation(const Material& material);
+/// The names of the models that have one, for messages: "modified-cam-clay".
+std::string preconsolidation_models();
+/// The model's initial hardening state at effective stress `sigma` (tension-positive) with
+/// overconsolidation ratio `ocr` (its initial_preconsolidation hook; 0 for models without one).
+double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr);
 
 }  // namespace soilsph

@@ -27,15 +27,23 @@ Parameters parameters(const LinearElastic& m) {
   return out;
 }
 
-Parameters parameters(const DruckerPrager& m) {
+/// The keys of frictional_fields (D-P, Mohr–Coulomb), after model and density.
+template <class Model>
+Parameters frictional_parameters(const Model& m) {
   const auto& p = m.params();
   Parameters out;
-  add_common(out, DruckerPrager::kName, p.density);
+  add_common(out, Model::kName, p.density);
   out.emplace_back("young_modulus", number(p.young_modulus));
   out.emplace_back("poisson_ratio", number(p.poisson_ratio));
   out.emplace_back("friction_angle", number(p.friction_angle));
   out.emplace_back("cohesion", number(p.cohesion));
   out.emplace_back("dilatancy_angle", number(p.dilatancy_angle));
+  return out;
+}
+
+Parameters parameters(const DruckerPrager& m) {
+  const auto& p = m.params();
+  Parameters out = frictional_parameters(m);
   out.emplace_back("plastic_potential", quoted(plastic_potential_name(p.plastic_potential)));
   out.emplace_back("integrator", quoted(integrator_name(p.integrator)));
   out.emplace_back("substep_tolerance", number(p.substep_tolerance));
@@ -59,6 +67,15 @@ Parameters parameters(const ModifiedCamClay& m) {
   out.emplace_back("substep_tolerance", number(p.substep_tolerance));
   out.emplace_back("implicit_alpha", number(p.implicit_alpha));
   out.emplace_back("implicit_tolerance", number(p.implicit_tolerance));
+  return out;
+}
+Parameters parameters(const MohrCoulomb& m) {
+  const auto& p = m.params();
+  Parameters out = frictional_parameters(m);
+  out.emplace_back("integrator", quoted(integrator_name(p.integrator)));
+  out.emplace_back("substep_tolerance", number(p.substep_tolerance));
+  if (p.tension_cutoff != MohrCoulomb::Params::kNoTensionCutoff)  // absent: none
+    out.emplace_back("tension_cutoff", number(p.tension_cutoff));
   return out;
 }
 }  // namespace

@@ -92,6 +92,13 @@ double TableReader::number(std::string_view key, Range range, std::string_view u
   return *value;
 }
 
+void FieldChecker::number(std::string_view key, const double& field, Range range, std::string_view unit) const {
+  if (range.contains(field)) return;
+  throw ParameterError(std::string(owner_) + " parameters: " + std::string(key) + " = " + format_number(field) +
+                       " is out of range (allowed: " + range.describe() + (unit.empty() ? "" : " ") +
+                       std::string(unit) + ")");
+}
+
 double TableReader::number_or(std::string_view key, double fallback, Range range,
                               std::string_view unit) const {
   if (has(key)) return number(key, range, unit);

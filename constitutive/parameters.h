@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 #include <toml++/toml.h>
 
@@ -108,6 +109,81 @@ class TableReader {
   mutable std::set<std::string, std::less<>> used_;
   mutable toml::table resolved_;
 };
+
+/// A model's parameters are listed once, in `Params::fields(io)`: each field with its key, its
+/// allowed range and (for optional keys) its default, the field's initial value in the struct. Two
+/// visitors walk that list: FieldReader fills the fields from a TOML table (Params::read), and
+/// FieldChecker checks a struct built in code against the same ranges (the model's constructor), so
+/// both paths share one set of keys, ranges and defaults.
+class FieldReader {
+ public:
+  explicit FieldReader(const TableReader& table) : table_(table) {}
+  /// A required key.
+  void number(std::string_view key, double& field, Range range, std::string_view unit = "") const {
+    field = table_.number(key, range, unit);
+  }
+  /// An optional key whose default is the field's current (initial) value.
+  void number_or(std::string_view key, double& field, Range range, std::string_view unit = "") const {
+    field = table_.number_or(key, field, range, unit);
+  }
+  /// An optional key without a default value: absent, the field keeps +∞ ("none").
+  void number_if_given(std::string_view key, double& field, Range range, std::string_view unit = "") const {
+    if (table_.has(key)) field = table_.number(key, range, unit);
+    else table_.accept({key});
+  }
+  /// An optional key naming one of `values` by the name at the same place in `names`.
+  template <class Enum>
+  void choice_or(std::string_view key, Enum& field, std::span<const std::string_view> names,
+                 std::span<const std::type_identity_t<Enum>> values) const {
+    std::size_t k = 0;
+    while (k < values.size() && values[k] != field) ++k;
+    const std::string name = table_.choice_or(key, names[k], names);
+    for (k = 0; k < names.size(); ++k)
+      if (names[k] == name) field = values[k];
+  }
+
+ private:
+  const TableReader& table_;
+};
+
+/// Checks fields set in code: a value outside its range throws ParameterError
+/// "OWNER: key = value is out of range (allowed: ...)", as TableReader says it of a file's key.
+class FieldChecker {
+ public:
+  explicit FieldChecker(std::string_view owner) : owner_(owner) {}
+  void number(std::string_view key, const double& field, Range range, std::string_view unit = "") const;
+  void number_or(std::string_view key, const double& field, Range range, std::string_view unit = "") const {
+    number(key, field, range, unit);
+  }
+  void number_if_given(std::string_view key, const double& field, Range range, std::string_view unit = "") const {
+    if (field != std::numeric_limits<double>::infinity()) number(key, field, range, unit);
+  }
+  /// An enum value is always one of its names.
+  template <class Enum>
+  void choice_or(std::string_view, const Enum&, std::span<const std::string_view>,
+                 std::span<const std::type_identity_t<Enum>>) const {}
+
+ private:
+  std::string_view owner_;
+};
+
+/// A Params struct read from `table` through its fields() list (the struct's initial values are the
+/// defaults of optional keys).
+template <class Params>
+Params read_fields(const TableReader& table) {
+  Params params;
+  params.fields(FieldReader(table));
+  return params;
+}
+
+/// `params` after checking every field against its range (Params::fields with a FieldChecker);
+/// `owner` names the model in the message. For constructors: `params_(validated(params, kName))`.
+template <class Params>
+const Params& validated(const Params& params, std::string_view owner) {
+  Params copy = params;
+  copy.fields(FieldChecker(owner));
+  return params;
+}
 
 /// Parses a TOML file, turning syntax errors into ParameterError with file, line and column.
 toml::table parse_toml_file(const std::string& path);

@@ -14,6 +14,14 @@ struct State {
   double plastic_multiplier = 0.0;     ///< Δλ of the last update (≥ 0), a diagnostic
 };
 
+/// Where an updated state lies among the corners of a model's stress space that integrators find
+/// hard, as the stress test counts them (constitutive/stress_test.h); a model's `marks(state)` says.
+struct StateMarks {
+  bool at_apex = false;              ///< a plastic state at the apex of a cone or pyramid (s = 0)
+  bool near_zero_pressure = false;   ///< a hardening model's p' < 0.01 p_c
+  bool near_critical_state = false;  ///< a plastic state within 5 % of the critical-state stress ratio
+};
+
 /// Adds a plastic strain increment to the accumulated measures of `state`.
 inline void accumulate_plastic_strain(State& state, const Mat3& d_plastic_strain) {
   state.plastic_strain += d_plastic_strain;

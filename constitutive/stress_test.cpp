@@ -36,14 +36,14 @@ State fresh_state(const Model&, std::mt19937_64& rng) {
   State s;
   const double p = 1e3 * std::pow(200.0, u(rng));  // 1–200 kPa
   s.stress = isotropic_stress(p);
-  if constexpr (std::is_same_v<Model, ModifiedCamClay>) s.pc = p * std::pow(20.0, u(rng));  // OCR 1–20
+  if constexpr (Model::kHasPreconsolidation) s.pc = p * std::pow(20.0, u(rng));  // OCR 1–20
   return s;
 }
 
 template <class Model>
 bool out_of_range(const Model&, const State& s) {
   if (std::abs(mean_pressure(s.stress)) > 1e9) return true;
-  if constexpr (std::is_same_v<Model, ModifiedCamClay>) return s.pc < 1.0 || s.pc > 1e9;
+  if constexpr (Model::kHasPreconsolidation) return s.pc < 1.0 || s.pc > 1e9;
   return false;
 }
 
@@ -57,7 +57,7 @@ std::string check(const Model& model, const State& s, const StressTestOptions& o
   if (!(f <= options.yield_tolerance))
     return "outside the yield surface (normalized f = " + std::to_string(f) + ")";
   if (!(s.plastic_multiplier >= 0.0)) return "negative plastic multiplier";
-  if constexpr (std::is_same_v<Model, ModifiedCamClay>) {
+  if constexpr (Model::kHasPreconsolidation) {
     if (!(s.pc > 0.0)) return "p_c <= 0";
     const double ratio = mean_pressure(s.stress) / s.pc;
     r.min_pressure_ratio = std::min(r.min_pressure_ratio, ratio);
@@ -66,16 +66,10 @@ std::string check(const Model& model, const State& s, const StressTestOptions& o
   return "";
 }
 
-template <class Model>
-void classify(const Model& model, const State& s, StressTestResult& r) {
-  if constexpr (std::is_same_v<Model, DruckerPrager>) {
-    if (s.plastic_multiplier > 0.0 && second_deviatoric_invariant(s.stress) == 0.0) ++r.at_apex;
-  } else {
-    const double p = mean_pressure(s.stress);
-    if (p < 0.01 * s.pc) ++r.near_zero_pressure;
-    if (s.plastic_multiplier > 0.0 && std::abs(deviatoric_stress(s.stress) / (model.M() * p) - 1.0) < 0.05)
-      ++r.near_critical_state;
-  }
+void classify(const StateMarks& marks, StressTestResult& r) {
+  r.at_apex += marks.at_apex;
+  r.near_zero_pressure += marks.near_zero_pressure;
+  r.near_critical_state += marks.near_critical_state;
 }
 
 void record(StressTestResult& r, long k, const std::string& what, const State& s, const Mat3& d_eps,
@@ -123,7 +117,7 @@ StressTestResult walk(const Model& model, const StressTestOptions& options) {
         continue;
       }
       if (next.plastic_multiplier > 0.0) ++r.plastic;
-      classify(model, next, r);
+      classify(model.marks(next), r);
       state = out_of_range(model, next) ? fresh_state(model, rng) : next;
     } catch (const IntegrationError& e) {
       if (r.failures++ == 0 && r.first_problem.empty()) record(r, k, e.what(), state, d_eps, d_spin);
@@ -140,7 +134,7 @@ StressTestResult run_stress_test(const Material& material, Integrator integrator
   return std::visit(
       [&](const auto& model) -> StressTestResult {
         using Model = std::decay_t<decltype(model)>;
-        if constexpr (std::is_same_v<Model, LinearElastic>) {
+        if constexpr (!PlasticModel<Model>) {
           throw std::invalid_argument("stress test: linear elasticity has no integrator to test");
         } else {
           auto params = model.params();
@@ -151,7 +145,7 @@ StressTestResult run_stress_test(const Material& material, Integrator integrator
       material);
 }
 
-std::vector<std::pair<std::string, Material>> stress_test_materials() {
+std::vector<StressTestMaterial> stress_test_materials() {
   DruckerPrager::Params dp{};  // Table 1
   dp.density = 2000.0, dp.young_modulus = 1.0e6, dp.poisson_ratio = 0.3, dp.friction_angle = 35.0;
   dp.cohesion = 0.0, dp.dilatancy_angle = 0.0;
@@ -164,10 +158,17 @@ std::vector<std::pair<std::string, Material>> stress_test_materials() {
   mcc.young_modulus = 1.0e6, mcc.elastic_pressure_floor = 1.0e3;
   ModifiedCamClay::Params mcc_constant = mcc;
   mcc_constant.elasticity = Elasticity::Kind::Constant;
-  return {{"drucker-prager (Table 1, c = 0, psi = 0)", DruckerPrager(dp)},
-          {"drucker-prager (c = 5 kPa, psi = 10 deg)", DruckerPrager(dp_cohesive)},
-          {"modified-cam-clay (Table 1, pressure-dependent K)", ModifiedCamClay(mcc)},
-          {"modified-cam-clay (Table 1, constant E)", ModifiedCamClay(mcc_constant)}};
+  MohrCoulomb::Params mc{};  // the Table 1 soil's E, ν, φ
+  mc.density = 2000.0, mc.young_modulus = 1.0e6, mc.poisson_ratio = 0.3, mc.friction_angle = 35.0;
+  mc.cohesion = 5e3, mc.dilatancy_angle = 10.0;
+  MohrCoulomb::Params mc_cutoff = mc;
+  mc_cutoff.tension_cutoff = 2e3;
+  return {{"drucker-prager (Table 1, c = 0, psi = 0)", "dp", DruckerPrager(dp)},
+          {"drucker-prager (c = 5 kPa, psi = 10 deg)", "dp-cohesive", DruckerPrager(dp_cohesive)},
+          {"modified-cam-clay (Table 1, pressure-dependent K)", "mcc", ModifiedCamClay(mcc)},
+          {"modified-cam-clay (Table 1, constant E)", "mcc-constant-E", ModifiedCamClay(mcc_constant)},
+          {"mohr-coulomb (c = 5 kPa, psi = 10 deg)", "mc", MohrCoulomb(mc)},
+          {"mohr-coulomb (c = 5 kPa, psi = 10 deg, T = 2 kPa)", "mc-cutoff", MohrCoulomb(mc_cutoff)}};
 }
 
 }  // namespace soilsph

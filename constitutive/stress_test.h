@@ -48,8 +48,16 @@ struct StressTestResult {
 StressTestResult run_stress_test(const Material& material, Integrator integrator,
                                  const StressTestOptions& options);
 
+/// One material of the stress test: its description, a short label (benchmark names) and the model.
+struct StressTestMaterial {
+  std::string name;
+  std::string label;
+  Material material;
+};
+
 /// The materials the stress test covers: Table 1 D-P (c = 0, ψ = 0), a cohesive dilatant D-P
-/// (c = 5 kPa, ψ = 10°), Table 1 MCC with pressure-dependent and with constant elasticity.
-std::vector<std::pair<std::string, Material>> stress_test_materials();
+/// (c = 5 kPa, ψ = 10°), Table 1 MCC with pressure-dependent and with constant elasticity, and
+/// Mohr–Coulomb with the Table 1 soil's φ (c = 5 kPa, ψ = 10°; and with a tension cut-off of 2 kPa).
+std::vector<StressTestMaterial> stress_test_materials();
 
 }  // namespace soilsph

@@ -34,15 +34,10 @@ std::vector<Point> boundary_points(const Geometry& g) {
   return points;
 }
 
-/// p_c for MCC; every other model has none.
+/// The model's initial hardening state (its hook: MCC's p_c, 0 for models without one).
 template <class Model>
-double initial_preconsolidation(const Model&, const Mat3&, const InitialConditions&) {
-  return 0.0;
-}
-double initial_preconsolidation(const ModifiedCamClay& model, const Mat3& sigma, const InitialConditions& c) {
-  const double p = mean_pressure(sigma), q = deviatoric_stress(sigma);
-  const double on_surface = p > 0.0 ? p + q * q / (model.M() * model.M() * p) : 0.0;
-  return std::max(c.overconsolidation_ratio * on_surface, c.preconsolidation_floor);
+double initial_preconsolidation(const Model& model, const Mat3& sigma, const InitialConditions& c) {
+  return model.initial_preconsolidation(sigma, c.overconsolidation_ratio, c.preconsolidation_floor);
 }
 
 template <class Model>

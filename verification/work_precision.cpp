@@ -51,7 +51,9 @@ struct Variant {
 std::vector<Variant> variants(const Material& material, const WorkPrecisionOptions& options) {
   std::vector<Variant> out;
   for (const std::string& integrator : options.integrators) {
-    if (integrator == "implicit" && std::holds_alternative<ModifiedCamClay>(material)) {
+    const bool error_controlled = std::visit(
+        [](const auto& model) { return requires { model.params().implicit_tolerance; }; }, material);
+    if (integrator == "implicit" && error_controlled) {
       out.push_back({integrator, material, integrator});
       for (double tolerance : options.implicit_tolerances) {
         std::ostringstream label;

@@ -24,7 +24,7 @@ struct WorkPrecisionRow {
 struct WorkPrecisionOptions {
   std::vector<int> increments = {1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000};
   /// Schemes; "substep" is run once per tolerance below and labelled e.g. "substep(1e-06)".
-  std::vector<std::string> integrators = {"explicit", "substep", "implicit"};
+  std::vector<std::string> integrators{std::begin(kIntegratorNames), std::end(kIntegratorNames)};
   std::vector<double> substep_tolerances = {1e-4, 1e-6, 1e-8};
   /// "implicit" also runs once per MCC `implicit_tolerance` here (labelled e.g. "implicit(0.001)").
   std::vector<double> implicit_tolerances = {1e-2, 1e-3, 1e-4};

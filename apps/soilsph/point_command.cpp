@@ -181,9 +181,9 @@ void run(const PointOptions& o, bool legs_given, bool test_options_given) {
   if (o.test.empty()) throw ParameterError("--test is required (or give a programme file, see docs/programmes.md)");
   const verification::PointTest test = point_test(o, legs_given);
   const Material material = load_point_material(o);
-  if (test.ocr != 1.0 && !std::holds_alternative<ModifiedCamClay>(material))
-    throw ParameterError("--ocr " + format_number(test.ocr) + ": OCR applies to modified-cam-clay only (" +
-                         std::string(model_name(material)) + " has no preconsolidation pressure)");
+  if (test.ocr != 1.0 && !has_preconsolidation(material))
+    throw ParameterError("--ocr " + format_number(test.ocr) + ": OCR applies to " + preconsolidation_models() +
+                         " only (" + std::string(model_name(material)) + " has no preconsolidation pressure)");
   const std::string integrator = integrator_to_run(o, material);
   verification::Programme programme;
   try {

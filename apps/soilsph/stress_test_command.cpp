@@ -34,8 +34,8 @@ void add_stress_test_command(CLI::App& app) {
                 "extension", "unloading", "apex", "p'<.01pc", "near-CSL", "failures", "violations", "max f",
                 "seconds");
     long problems = 0;
-    for (const auto& [name, material] : stress_test_materials()) {
-      for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
+    for (const auto& [name, label, material] : stress_test_materials()) {
+      for (Integrator scheme : kIntegrators) {
         const StressTestResult r = run_stress_test(material, scheme, *options);
         std::printf("%-50s %-9s %10ld %10ld %9ld %9ld %9ld %9ld %8ld %10ld %11.3g %9.1f\n", name.c_str(),
                     std::string(integrator_name(scheme)).c_str(), r.plastic, r.extension, r.unloading,

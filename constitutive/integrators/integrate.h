@@ -8,6 +8,7 @@
 #include "constitutive/integrators/explicit_rate.h"
 #include "constitutive/integrators/implicit_cam_clay.h"
 #include "constitutive/integrators/implicit_drucker_prager.h"
+#include "constitutive/integrators/implicit_mohr_coulomb.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/integrators/substep.h"
 #include "constitutive/rotation.h"

@@ -2,9 +2,12 @@
 /// @file
 /// Names of the stress-integration schemes. A model stores the scheme chosen from its input once;
 /// its update switches on this enum (a predictable branch, no virtual call).
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include "constitutive/parameters.h"
 
 namespace soilsph {
 
@@ -14,22 +17,26 @@ enum class Integrator {
   Implicit,  ///< return mapping with the consistent tangent: D-P closest-point projection, MCC generalised midpoint
 };
 
-/// The input/CLI name of a scheme, e.g. "explicit".
-std::string_view integrator_name(Integrator integrator);
-/// All scheme names accepted in input files, for messages and validation.
+/// Every scheme, in the order of the enum: the one list that the parser, the stress test and the
+/// benchmarks iterate (a new scheme is added here and in the enum only).
+inline constexpr Integrator kIntegrators[] = {Integrator::Explicit, Integrator::Substep, Integrator::Implicit};
+/// Their input/CLI names, in the same order, for messages and validation.
 inline constexpr std::string_view kIntegratorNames[] = {"explicit", "substep", "implicit"};
+static_assert(std::size(kIntegrators) == std::size(kIntegratorNames));
+
+/// The input/CLI name of a scheme, e.g. "explicit".
+constexpr std::string_view integrator_name(Integrator integrator) {
+  for (std::size_t k = 0; k < std::size(kIntegrators); ++k)
+    if (kIntegrators[k] == integrator) return kIntegratorNames[k];
+  return "unknown";
+}
 /// The scheme for a name; throws std::invalid_argument for an unknown name.
 Integrator parse_integrator(std::string_view name);
 
 /// Default relative stress-error tolerance of `substep` (material key `substep_tolerance`).
 inline constexpr double kDefaultSubstepTolerance = 1e-6;
-
-class TableReader;
-/// Reads the optional `integrator` key of a material table; `fallback` when absent (each model's
-/// default is the scheme with the best accuracy for its cost in docs/integrators.md).
-Integrator read_integrator(const TableReader& table, Integrator fallback);
-/// Reads the optional `substep_tolerance` key (default kDefaultSubstepTolerance, 1e-12 ≤ value ≤ 1e-2).
-double read_substep_tolerance(const TableReader& table);
+/// Allowed `substep_tolerance`: 1e-12 ≤ value ≤ 1e-2.
+inline constexpr Range kSubstepToleranceRange{1e-12, 1e-2, false, false};
 
 /// A stress update that cannot be completed (no convergence, inadmissible state): never a NaN.
 class IntegrationError : public std::runtime_error {

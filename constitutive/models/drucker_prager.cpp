@@ -1,6 +1,7 @@
 #include "constitutive/models/drucker_prager.h"
 
 #include <numbers>
+#include <sstream>
 
 #include "constitutive/integrators/integrate.h"
 #include "constitutive/material_limits.h"
@@ -18,26 +19,19 @@ std::string_view plastic_potential_name(PlasticPotential potential) {
   return potential == PlasticPotential::PaperEq20 ? "paper-eq20" : "matched";
 }
 
-DruckerPragerParams DruckerPragerParams::read(const TableReader& t) {
-  DruckerPragerParams p{};
-  p.density = t.number("density", Range::positive(), "kg/m^3");
-  p.young_modulus = t.number("young_modulus", limits::young_modulus_range(), "Pa");
-  p.poisson_ratio = t.number("poisson_ratio", Range::open(-1.0, 0.5));
-  p.friction_angle = t.number("friction_angle", Range::open(0.0, 90.0), "degrees");
-  p.cohesion = t.number_or("cohesion", 0.0, Range::closed(0.0, limits::kMaxStress), "Pa");
-  p.dilatancy_angle = t.number_or("dilatancy_angle", 0.0, Range::closed(0.0, p.friction_angle), "degrees");
-  using enum PlasticPotential;
-  const std::string potential =
-      t.choice_or("plastic_potential", plastic_potential_name(Matched),
-                  {plastic_potential_name(Matched), plastic_potential_name(PaperEq20)});
-  p.plastic_potential = potential == plastic_potential_name(PaperEq20) ? PaperEq20 : Matched;
-  p.integrator = read_integrator(t, kDefaultIntegrator);
-  p.substep_tolerance = read_substep_tolerance(t);
-  return p;
+template <class Io>
+void DruckerPragerParams::fields(const Io& io) {
+  frictional_fields(io, *this);
+  io.choice_or("plastic_potential", plastic_potential, kPlasticPotentialNames, kPlasticPotentials);
+  io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
+  io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
 }
 
+DruckerPragerParams DruckerPragerParams::read(const TableReader& t) { return read_fields<DruckerPragerParams>(t); }
+
 DruckerPrager::DruckerPrager(const Params& params)
-    : params_(params), elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)) {
+    : params_(validated(params, kName)),
+      elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)) {
   const double tan_phi = std::tan(params.friction_angle * kDegree);
   const double root = std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);  // eq 19
   alpha_phi_ = tan_phi / root;
@@ -50,6 +44,16 @@ DruckerPrager::DruckerPrager(const Params& params)
     const double tan_psi = std::tan(psi);
     alpha_psi_ = tan_psi / std::sqrt(9.0 + 12.0 * tan_psi * tan_psi);  // eq 19 with ψ for φ
   }
+}
+
+std::string DruckerPrager::describe_constants() const {
+  const Moduli D = elasticity_.at(0.0);
+  std::ostringstream out;
+  out << "  K = " << D.K << " Pa, G = " << D.G << " Pa\n"
+      << "  alpha_phi = " << alpha_phi_ << ", k_c = " << k_c_ << " Pa (eq 19, plane strain)\n"
+      << "  alpha_psi = " << alpha_psi_ << " (the plastic potential's I1 coefficient, "
+      << plastic_potential_name(params_.plastic_potential) << ")\n";
+  return out.str();
 }
 
 double DruckerPrager::yield(const Mat3& sigma, double) const {

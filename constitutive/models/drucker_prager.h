@@ -8,8 +8,11 @@
 ///              "paper-eq20"         α_ψ = 3 sinψ, the potential as printed (eq 20)
 /// Stresses are tension-positive, so I1 < 0 in compression and the cone's apex is at I1 = k_c/α_φ;
 /// α_ψ > 0 makes the plastic volume grow (dilate).
+#include <string>
+
 #include "constitutive/elasticity.h"
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/models/perfect_plasticity.h"
 #include "constitutive/parameters.h"
 #include "constitutive/state.h"
 #include "constitutive/voigt.h"
@@ -21,26 +24,27 @@ enum class PlasticPotential {
   Matched,    ///< α_ψ = tanψ/√(9 + 12 tan²ψ): like α_φ of eq 19; ψ = φ is associated flow
   PaperEq20,  ///< α_ψ = 3 sinψ: eq 20 as printed, to reproduce the paper
 };
+inline constexpr PlasticPotential kPlasticPotentials[] = {PlasticPotential::Matched, PlasticPotential::PaperEq20};
+inline constexpr std::string_view kPlasticPotentialNames[] = {"matched", "paper-eq20"};
 std::string_view plastic_potential_name(PlasticPotential potential);
 
-struct DruckerPragerParams {
+/// The parameters, with the defaults of an input file: a struct built in code runs as the same TOML
+/// with the required keys given (the model's constructor checks every range).
+struct DruckerPragerParams : FrictionalParams {
   /// Input default: the closed-form return is the cheapest update (48 ns) and as accurate as any
   /// scheme on the work-precision paths (docs/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
-  double density;          ///< kg/m³
-  double young_modulus;    ///< Pa
-  double poisson_ratio;    ///< −
-  double friction_angle;   ///< φ, degrees
-  double cohesion;         ///< c, Pa
-  double dilatancy_angle;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
   PlasticPotential plastic_potential = PlasticPotential::Matched;  ///< how α_ψ follows from ψ
-  Integrator integrator = Integrator::Explicit;
+  Integrator integrator = kDefaultIntegrator;
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
 
   static DruckerPragerParams read(const TableReader& table);
+  /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
+  template <class Io>
+  void fields(const Io& io);
 };
 
-class DruckerPrager {
+class DruckerPrager : public PerfectPlasticity {
  public:
   using Params = DruckerPragerParams;
   static constexpr std::string_view kName = "drucker-prager";
@@ -66,9 +70,10 @@ class DruckerPrager {
   Mat3 yield_gradient(const Mat3& sigma, double /*pc*/ = 0.0) const;
   /// ∂g/∂σ = s/(2√J2) + α_ψ I (eq 20 with α_ψ = 3 sinψ as printed, or the matched α_ψ).
   Mat3 flow_direction(const Mat3& sigma, double /*pc*/ = 0.0) const;
-  /// Perfect plasticity: no hardening.
-  double hardening_modulus(const Mat3&, double) const { return 0.0; }
-  double harden(double pc, const Mat3& /*d_plastic_strain*/) const { return pc; }
+  // Perfect plasticity: hardening_modulus, harden, hardening_rate, initial_preconsolidation and
+  // marks (the apex) from PerfectPlasticity.
+  /// The derived constants, one "  name = value" line each (`soilsph material`).
+  std::string describe_constants() const;
   /// The paper's stress correction: tension cracking beyond the apex (eq 30–31, apex at
   /// I1 = k_c/α_φ) then scaling of the deviator back to the cone (eq 32–33).
   Mat3 correct(const Mat3& sigma, double pc = 0.0) const;

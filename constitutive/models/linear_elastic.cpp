@@ -1,15 +1,26 @@
 #include "constitutive/models/linear_elastic.h"
 
+#include <sstream>
+
 #include "constitutive/material_limits.h"
 
 namespace soilsph {
 
-LinearElasticParams LinearElasticParams::read(const TableReader& t) {
-  LinearElasticParams p{};
-  p.density = t.number("density", Range::positive(), "kg/m^3");
-  p.young_modulus = t.number("young_modulus", limits::young_modulus_range(), "Pa");
-  p.poisson_ratio = t.number("poisson_ratio", Range::open(-1.0, 0.5));
-  return p;
+template <class Io>
+void LinearElasticParams::fields(const Io& io) {
+  io.number("density", density, Range::positive(), "kg/m^3");
+  io.number("young_modulus", young_modulus, limits::young_modulus_range(), "Pa");
+  io.number("poisson_ratio", poisson_ratio, Range::open(-1.0, 0.5));
 }
+template void LinearElasticParams::fields(const FieldChecker&);
+
+std::string LinearElastic::describe_constants() const {
+  const Moduli D = elasticity_.at(0.0);
+  std::ostringstream out;
+  out << "  K = " << D.K << " Pa, G = " << D.G << " Pa\n";
+  return out.str();
+}
+
+LinearElasticParams LinearElasticParams::read(const TableReader& t) { return read_fields<LinearElasticParams>(t); }
 
 }  // namespace soilsph

@@ -1,6 +1,7 @@
 #include "constitutive/models/modified_cam_clay.h"
 
 #include <numbers>
+#include <sstream>
 
 #include "constitutive/integrators/integrate.h"
 #include "constitutive/material_limits.h"
@@ -8,30 +9,34 @@
 
 namespace soilsph {
 
-ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
-  ModifiedCamClayParams p{};
-  p.density = t.number("density", Range::positive(), "kg/m^3");
-  p.poisson_ratio = t.number("poisson_ratio", Range::open(-1.0, 0.5));
+namespace {
+constexpr Elasticity::Kind kElasticityKinds[] = {Elasticity::Kind::Constant, Elasticity::Kind::PressureDependent};
+constexpr std::string_view kElasticityNames[] = {"constant", "pressure-dependent"};
+}  // namespace
+
+template <class Io>
+void ModifiedCamClayParams::fields(const Io& io) {
+  io.number("density", density, Range::positive(), "kg/m^3");
+  io.number("poisson_ratio", poisson_ratio, Range::open(-1.0, 0.5));
   // From 1 degree: below it M < 0.035 and the ellipse degenerates into the p axis (at 1e-299
   // degrees M^2 underflows and returns end above p_c); no soil's critical state is that smooth.
-  p.friction_angle = t.number("friction_angle", Range::closed_open(1.0, 90.0), "degrees");
-  p.compression_index = t.number("compression_index", Range::positive());
-  p.swelling_index = t.number("swelling_index", Range::open(0.0, p.compression_index));
-  p.initial_void_ratio = t.number("initial_void_ratio", Range::positive());
-  const std::string kind =
-      t.choice_or("elasticity", "pressure-dependent", {"constant", "pressure-dependent"});
-  p.elasticity = kind == "constant" ? Elasticity::Kind::Constant : Elasticity::Kind::PressureDependent;
-  if (p.elasticity == Elasticity::Kind::Constant) {
-    p.young_modulus = t.number("young_modulus", limits::young_modulus_range(), "Pa");
+  io.number("friction_angle", friction_angle, Range::closed_open(1.0, 90.0), "degrees");
+  io.number("compression_index", compression_index, Range::positive());
+  io.number("swelling_index", swelling_index, Range::open(0.0, compression_index));
+  io.number("initial_void_ratio", initial_void_ratio, Range::positive());
+  io.choice_or("elasticity", elasticity, kElasticityNames, kElasticityKinds);
+  if (elasticity == Elasticity::Kind::Constant) {
+    io.number("young_modulus", young_modulus, limits::young_modulus_range(), "Pa");
   } else {
-    p.elastic_pressure_floor = t.number_or("elastic_pressure_floor", 1.0e3, limits::stress_range(), "Pa");
+    io.number_or("elastic_pressure_floor", elastic_pressure_floor, limits::stress_range(), "Pa");
   }
-  p.integrator = read_integrator(t, kDefaultIntegrator);
-  p.substep_tolerance = read_substep_tolerance(t);
-  p.implicit_alpha = t.number_or("implicit_alpha", kDefaultImplicitAlpha, Range::closed(0.5, 1.0));
-  p.implicit_tolerance = t.number_or("implicit_tolerance", 0.0, Range::closed(0.0, 1e-2));
-  return p;
+  io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
+  io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
+  io.number_or("implicit_alpha", implicit_alpha, Range::closed(0.5, 1.0));
+  io.number_or("implicit_tolerance", implicit_tolerance, Range::closed(0.0, 1e-2));
 }
+
+ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) { return read_fields<ModifiedCamClayParams>(t); }
 
 namespace {
 Elasticity make_elasticity(const ModifiedCamClayParams& p) {
@@ -43,7 +48,7 @@ Elasticity make_elasticity(const ModifiedCamClayParams& p) {
 }  // namespace
 
 ModifiedCamClay::ModifiedCamClay(const Params& params)
-    : params_(params),
+    : params_(validated(params, kName)),
       elasticity_(make_elasticity(params)),
       theta_((1.0 + params.initial_void_ratio) / (params.compression_index - params.swelling_index)) {
   const double sin_phi = std::sin(params.friction_angle * std::numbers::pi / 180.0);
@@ -71,6 +76,27 @@ double ModifiedCamClay::hardening_modulus(const Mat3& sigma, double pc) const {
 
 double ModifiedCamClay::harden(double pc, const Mat3& d_plastic_strain) const {
   return pc * std::exp(theta_ * volumetric_strain(d_plastic_strain));
+}
+
+double ModifiedCamClay::initial_preconsolidation(const Mat3& sigma, double ocr, double floor) const {
+  const double p = mean_pressure(sigma), q = deviatoric_stress(sigma);
+  const double on_surface = p > 0.0 ? p + q * q / (M_ * M_ * p) : 0.0;
+  return std::max(ocr * on_surface, floor);
+}
+
+StateMarks ModifiedCamClay::marks(const State& s) const {
+  const double p = mean_pressure(s.stress);
+  StateMarks m;
+  m.near_zero_pressure = p < 0.01 * s.pc;
+  m.near_critical_state =
+      s.plastic_multiplier > 0.0 && std::abs(deviatoric_stress(s.stress) / (M_ * p) - 1.0) < 0.05;
+  return m;
+}
+
+std::string ModifiedCamClay::describe_constants() const {
+  std::ostringstream out;
+  out << "  M = " << M_ << " (eq 26), (1+e0)/(lambda-kappa) = " << theta_ << '\n';
+  return out.str();
 }
 
 Mat3 ModifiedCamClay::correct(const Mat3& sigma, double pc) const {

@@ -6,6 +6,8 @@
 ///   hardening  p_c = p_c0 exp[(1+e0)/(λ−κ) · ε_v^p], ε_v^p compression-positive   (eq 27)
 /// The paper writes eq 27 for compression-positive ε_v^p while its stresses are tension-positive
 /// (paper-notes): the flow rule's plastic volume is negated before it enters the hardening law.
+#include <string>
+
 #include "constitutive/elasticity.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/parameters.h"
@@ -14,22 +16,25 @@
 
 namespace soilsph {
 
+/// The parameters, with the defaults of an input file: a struct built in code runs as the same TOML
+/// with the required keys given (the model's constructor checks every range).
 struct ModifiedCamClayParams {
   /// Input default: the second-order implicit return reaches an error ≤ 1e-4 cheapest on the drained
   /// and oedometer work-precision paths, 3-9× cheaper than `substep` at its default tolerance, with a
   /// cost per update that does not grow with the increment (docs/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
   static constexpr double kDefaultImplicitAlpha = 0.5;
-  double density;                 ///< kg/m³
-  double poisson_ratio;           ///< −
-  double friction_angle;          ///< φ, degrees (gives M, eq 26)
-  double compression_index;       ///< λ, slope of the NCL in e–ln p
-  double swelling_index;          ///< κ, slope of the swelling line in e–ln p
-  double initial_void_ratio;      ///< e0
-  Elasticity::Kind elasticity;    ///< "constant" (E, ν) or "pressure-dependent" (K = (1+e0)p/κ)
-  double young_modulus;           ///< Pa, constant elasticity only
-  double elastic_pressure_floor;  ///< Pa, pressure-dependent elasticity only
-  Integrator integrator = Integrator::Explicit;
+  double density = 0.0;               ///< kg/m³ (required)
+  double poisson_ratio = 0.0;         ///< − (required)
+  double friction_angle = 0.0;        ///< φ, degrees (gives M, eq 26) (required)
+  double compression_index = 0.0;     ///< λ, slope of the NCL in e–ln p (required)
+  double swelling_index = 0.0;        ///< κ, slope of the swelling line in e–ln p (required)
+  double initial_void_ratio = 0.0;    ///< e0 (required)
+  /// "constant" (E, ν) or "pressure-dependent" (K = (1+e0)p/κ)
+  Elasticity::Kind elasticity = Elasticity::Kind::PressureDependent;
+  double young_modulus = 0.0;             ///< Pa, constant elasticity only (then required)
+  double elastic_pressure_floor = 1.0e3;  ///< Pa, pressure-dependent elasticity only
+  Integrator integrator = kDefaultIntegrator;
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
   /// `implicit`: generalised-midpoint parameter α of the flow rule, ½ (midpoint, second order) to 1
   /// (backward Euler, first order).
@@ -39,6 +44,9 @@ struct ModifiedCamClayParams {
   double implicit_tolerance = 0.0;
 
   static ModifiedCamClayParams read(const TableReader& table);
+  /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
+  template <class Io>
+  void fields(const Io& io);
 };
 
 class ModifiedCamClay {
@@ -71,6 +79,23 @@ class ModifiedCamClay {
   double hardening_modulus(const Mat3& sigma, double pc) const;
   /// p_c after a plastic strain increment, eq 27 exact over the increment.
   double harden(double pc, const Mat3& d_plastic_strain) const;
+  /// p_c is the hardening variable: an OCR sets it.
+  static constexpr bool kHasPreconsolidation = true;
+  /// The initial p_c at effective stress σ with overconsolidation ratio OCR:
+  ///   p_c = max(OCR · (p + q²/(M² p)), floor),
+  /// OCR times the p_c of the ellipse through (p, q) (eq 24), OCR · p on an isotropic state; 0
+  /// before the floor where p ≤ 0 (a free surface). One formula for the point programmes and the
+  /// SPH column (whose [initial] preconsolidation_floor keeps the top from having no strength).
+  double initial_preconsolidation(const Mat3& sigma, double ocr, double floor = 0.0) const;
+  /// ṗ_c of the rate equations (CVODE reference) for plastic flow λ̇ n_g: eq 27 in rate form,
+  /// (1+e0)/(λ−κ) · p_c · (−tr ε̇^p) with the compression-positive plastic volume −tr ε̇^p.
+  double hardening_rate(const Mat3& /*sigma*/, double pc, double lambda_dot, const Mat3& n_g) const {
+    return theta_ * pc * (-lambda_dot * n_g.trace());
+  }
+  /// The stress test's marks: p' < 0.01 p_c, and a plastic state with |q/(M p') − 1| < 0.05.
+  StateMarks marks(const State& s) const;
+  /// The derived constants, one "  name = value" line each (`soilsph material`).
+  std::string describe_constants() const;
   /// The paper's correction (eq 34–35) done as its text describes: move (p, q) along the line to the
   /// ellipse's centre (p_c/2, 0) until it meets the surface; p_c is kept. The printed β, θ of eq 35
   /// are not that point (paper-notes), so the intersection is derived here:

@@ -118,7 +118,7 @@ TEST_CASE("implicit MCC returns tensile trials, down to a vanishing surface", "[
 
 TEST_CASE("the same increment applied to the same state gives the same stress bit for bit", "[integrators]") {
   std::mt19937_64 rng(7);
-  for (Integrator scheme : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
+  for (Integrator scheme : kIntegrators) {
     const DruckerPrager dp(with(test::table1_drucker_prager_params(1e3, 5.0), scheme));
     const ModifiedCamClay mcc(
         with(test::table1_cam_clay_params(Elasticity::Kind::PressureDependent), scheme));

@@ -48,6 +48,10 @@ TEST_CASE("the shipped Table 1 materials load", "[parameters]") {
   CHECK(model_name(mcc) == "modified-cam-clay");
   CHECK(density(mcc) == 2000.0);
   CHECK(std::get<ModifiedCamClay>(mcc).params().swelling_index == 0.019);
+  const Material mc = load_material(SOILSPH_SOURCE_DIR "/data/materials/mc-table1.toml");
+  CHECK(model_name(mc) == "mohr-coulomb");
+  CHECK(std::get<MohrCoulomb>(mc).params().friction_angle == std::get<DruckerPrager>(dp).params().friction_angle);
+  CHECK(!std::get<MohrCoulomb>(mc).has_tension_cutoff());
 }
 
 TEST_CASE("invalid parameters are rejected with file, key and range", "[parameters]") {
@@ -84,7 +88,7 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
       {replace(kCamClay, "density = 2000.0\n", ""), "[material] density: is missing"},
       {replace(kCamClay, "model = \"modified-cam-clay\"", "model = \"cam-clay\""),
        "[material] model = \"cam-clay\" is not allowed (allowed: \"linear-elastic\", \"drucker-prager\", "
-       "\"modified-cam-clay\")"},
+       "\"modified-cam-clay\", \"mohr-coulomb\")"},
       {kDruckerPrager + "integrator = \"rk4\"\n", "[material] integrator = \"rk4\" is not allowed"},
       {kCamClay + "elasticity = \"nonlinear\"\n", "[material] elasticity = \"nonlinear\" is not allowed"},
       {kDruckerPrager + "plastic_potential = \"eq20\"\n",
@@ -266,4 +270,60 @@ TEST_CASE("a described material reads back to the same parameters", "[parameters
       "young_modulus = 0.1\npoisson_ratio = -0.2\n");
   CHECK(describe_material(read_back(elastic)) ==
         "model = \"linear-elastic\"; density = 1500; young_modulus = 0.1; poisson_ratio = -0.2");
+}
+
+// A model built in code goes through the same ranges and defaults as one read from TOML.
+TEST_CASE("a model built in code from bad parameters throws, naming the key", "[parameters]") {
+  DruckerPrager::Params dp;
+  dp.density = 2000.0, dp.young_modulus = 1.0e6, dp.poisson_ratio = 0.3, dp.friction_angle = 30.0;
+  CHECK_NOTHROW(DruckerPrager(dp));
+  dp.dilatancy_angle = 31.0;  // ψ > φ
+  CHECK_THROWS_WITH(DruckerPrager(dp), Contains("drucker-prager parameters: dilatancy_angle = 31") &&
+                                           Contains("0 <= value <= 30 degrees"));
+  dp.dilatancy_angle = 0.0, dp.poisson_ratio = 0.5;
+  CHECK_THROWS_AS(DruckerPrager(dp), ParameterError);
+  CHECK_THROWS_WITH(DruckerPrager(dp), Contains("poisson_ratio = 0.5"));
+
+  ModifiedCamClay::Params mcc;
+  mcc.density = 2000.0, mcc.poisson_ratio = 0.3, mcc.friction_angle = 35.0;
+  mcc.compression_index = 0.085, mcc.swelling_index = 0.019, mcc.initial_void_ratio = 0.68;
+  CHECK_NOTHROW(ModifiedCamClay(mcc));
+  mcc.swelling_index = 0.085;  // κ = λ
+  CHECK_THROWS_WITH(ModifiedCamClay(mcc), Contains("modified-cam-clay parameters: swelling_index = 0.085") &&
+                                              Contains("0 < value < 0.085"));
+  mcc.swelling_index = 0.019, mcc.elasticity = Elasticity::Kind::Constant;  // E is then required
+  CHECK_THROWS_WITH(ModifiedCamClay(mcc), Contains("young_modulus = 0"));
+  CHECK_THROWS_WITH(LinearElastic(LinearElastic::Params{}), Contains("linear-elastic parameters: density = 0"));
+}
+
+TEST_CASE("a model built in code has the defaults of an input file", "[parameters]") {
+  const DruckerPrager::Params dp_code;
+  const auto& dp_toml = std::get<DruckerPrager>(from_text(
+      "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\nyoung_modulus = 1.0e6\n"
+      "poisson_ratio = 0.3\nfriction_angle = 35.0\n")).params();
+  CHECK(dp_code.integrator == dp_toml.integrator);
+  CHECK(dp_code.integrator == Integrator::Implicit);
+  CHECK(std::tie(dp_code.cohesion, dp_code.dilatancy_angle, dp_code.plastic_potential, dp_code.substep_tolerance) ==
+        std::tie(dp_toml.cohesion, dp_toml.dilatancy_angle, dp_toml.plastic_potential, dp_toml.substep_tolerance));
+  const ModifiedCamClay::Params mcc_code;
+  const auto& mcc_toml = std::get<ModifiedCamClay>(from_text(kCamClay)).params();
+  CHECK(std::tie(mcc_code.integrator, mcc_code.elasticity, mcc_code.elastic_pressure_floor,
+                 mcc_code.substep_tolerance, mcc_code.implicit_alpha, mcc_code.implicit_tolerance) ==
+        std::tie(mcc_toml.integrator, mcc_toml.elasticity, mcc_toml.elastic_pressure_floor,
+                 mcc_toml.substep_tolerance, mcc_toml.implicit_alpha, mcc_toml.implicit_tolerance));
+}
+
+TEST_CASE("mohr-coulomb reads the D-P keys and an optional tension cut-off", "[parameters][mohr-coulomb]") {
+  const std::string mc = replace(kDruckerPrager, "model = \"drucker-prager\"", "model = \"mohr-coulomb\"");
+  const auto& plain = std::get<MohrCoulomb>(from_text(mc));
+  CHECK(plain.params().tension_cutoff == MohrCoulomb::Params::kNoTensionCutoff);
+  CHECK(plain.integrator() == Integrator::Implicit);
+  CHECK(std::get<MohrCoulomb>(from_text(mc + "tension_cutoff = 1000.0\n")).tension_cutoff() == 1000.0);
+  CHECK_THROWS_WITH(from_text(mc + "tension_cutoff = -1.0\n"), Contains("[material] tension_cutoff = -1"));
+  CHECK_THROWS_WITH(from_text(replace(mc, "dilatancy_angle = 0.0", "dilatancy_angle = 40.0")),
+                    Contains("[material] dilatancy_angle = 40"));
+  // What a result records of it reads back (the cut-off only when given).
+  CHECK(describe_material(from_text(mc)).find("tension_cutoff") == std::string::npos);
+  CHECK(describe_material(from_text(mc + "tension_cutoff = 1000.0\n")).find("tension_cutoff = 1000") !=
+        std::string::npos);
 }

@@ -10,7 +10,7 @@ using namespace soilsph::sph;
 using Catch::Matchers::Contains;
 
 TEST_CASE("the shipped scenes hold the paper's column: 41 x 61 = 2501 particles at 1 mm", "[scene]") {
-  for (const char* name : {"collapse-dp", "collapse-mcc"}) {
+  for (const char* name : {"collapse-dp", "collapse-mcc", "collapse-mc"}) {
     const Scene scene = test::shipped_scene(name);
     const Particles p = build_particles(scene);
     CHECK(p.soil_count == 2501);
@@ -21,6 +21,7 @@ TEST_CASE("the shipped scenes hold the paper's column: 41 x 61 = 2501 particles 
   }
   CHECK(model_name(test::shipped_scene("collapse-dp").material) == "drucker-prager");
   CHECK(model_name(test::shipped_scene("collapse-mcc").material) == "modified-cam-clay");
+  CHECK(model_name(test::shipped_scene("collapse-mc").material) == "mohr-coulomb");
 }
 
 TEST_CASE("overrides (--set) reach any key and unknown keys are errors", "[scene]") {

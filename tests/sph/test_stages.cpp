@@ -217,7 +217,9 @@ TEST_CASE(
 }
 
 TEST_CASE("the fallback of a model with a choice of scheme is its substep twin", "[sph][stress]") {
-  ModifiedCamClay::Params params;
+  ModifiedCamClay::Params params;  // Table 1 (the constructor checks every parameter)
+  params.density = 2000.0, params.poisson_ratio = 0.3, params.friction_angle = 35.0;
+  params.compression_index = 0.085, params.swelling_index = 0.019, params.initial_void_ratio = 0.68;
   params.integrator = Integrator::Implicit;
   CHECK(fallback_model(ModifiedCamClay(params)).integrator() == Integrator::Substep);
 }

@@ -9,6 +9,7 @@
 #include "verification/closed_form/cam_clay_undrained.h"
 #include "verification/closed_form/drucker_prager_strain_path.h"
 #include "verification/closed_form/drucker_prager_triaxial.h"
+#include "verification/closed_form/mohr_coulomb_triaxial.h"
 
 namespace soilsph::verification {
 
@@ -104,6 +105,13 @@ std::vector<ReferencePoint> closed_form_curve(std::string_view name, const Mater
     needs_path(LoadPath::Oedometer);
     return CamClayOedometer(model_of<ModifiedCamClay>(material, name), test.p_initial, test.ocr)
         .curve(driven);
+  }
+  if (name == "mc-triaxial-drained" || name == "mc-triaxial-undrained") {  // compression or extension
+    const bool undrained = name == "mc-triaxial-undrained";
+    needs_path(undrained ? LoadPath::TriaxialUndrained : LoadPath::TriaxialDrained);
+    require(std::is_sorted(driven.begin(), driven.end()) || std::is_sorted(driven.rbegin(), driven.rend()), name,
+            "needs a single monotonic loading leg");
+    return pointwise(MohrCoulombTriaxial(model_of<MohrCoulomb>(material, name), test.p_initial, undrained), driven);
   }
   throw std::invalid_argument("unknown closed form '" + std::string(name) + "'");
 }

@@ -15,7 +15,7 @@ namespace soilsph::verification {
 inline constexpr std::string_view kClosedFormNames[] = {
     "none",         "dp-triaxial-drained",    "dp-triaxial-undrained", "dp-oedometer",
     "dp-isotropic", "mcc-triaxial-undrained", "mcc-triaxial-drained",  "mcc-isotropic",
-    "mcc-oedometer"};
+    "mcc-oedometer", "mc-triaxial-drained", "mc-triaxial-undrained"};
 
 /// The driven strain of a row: volumetric on the isotropic path, axial otherwise (compression-positive).
 double driven_strain(const PointRecord& row, LoadPath path);

@@ -81,13 +81,6 @@ void check_meaning(const PointHistory& history, const Programme& programme) {
 
 }  // namespace
 
-double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr) {
-  const auto* mcc = std::get_if<ModifiedCamClay>(&material);
-  if (!mcc) return 0.0;
-  const double p = mean_pressure(sigma), q = deviatoric_stress(sigma), M = mcc->M();
-  return ocr * (q == 0.0 ? p : p + q * q / (M * M * p));
-}
-
 Programme programme_of(const Material& material, const PointTest& test) {
   Programme programme;
   programme.legs = build_legs(test);

@@ -31,9 +31,4 @@ Programme programme_of(const Material& material, const PointTest& test);
 /// result has lost meaning (as run_point_test).
 PointCurve run_programme(const Material& material, const Programme& programme, std::string_view integrator);
 
-/// The hardening state at effective stress `sigma` (tension-positive) with overconsolidation ratio
-/// `ocr`: MCC's p_c = OCR × the p_c of the ellipse through σ, p + q²/(M² p) (OCR · p on an
-/// isotropic state); models without one get 0.
-double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr);
-
 }  // namespace soilsph::verification

@@ -72,10 +72,9 @@ bool inside_yield_surface(const Material& material, const State& s) {
 }
 
 State read_initial(const TableReader& t, const Material& material, std::string& text) {
-  const bool has_pc = std::holds_alternative<ModifiedCamClay>(material);
   const double ocr = t.number_or("ocr", 1.0, point_limits::ocr());
-  if (ocr != 1.0 && !has_pc)
-    t.fail("ocr", "applies to models with a preconsolidation pressure (modified-cam-clay) only");
+  if (ocr != 1.0 && !has_preconsolidation(material))
+    t.fail("ocr", "applies to models with a preconsolidation pressure (" + preconsolidation_models() + ") only");
   State s;
   std::ostringstream out;
   if (t.has("p") == t.has("vertical_stress"))
@@ -94,7 +93,7 @@ State read_initial(const TableReader& t, const Material& material, std::string& 
     out << "K0 state: vertical_stress = " << exact_number(v) << " Pa, lateral_stress_ratio = " << exact_number(k0);
   }
   s.pc = initial_preconsolidation(material, s.stress, ocr);
-  if (has_pc) out << ", ocr = " << exact_number(ocr) << " (p_c = " << exact_number(s.pc) << " Pa)";
+  if (has_preconsolidation(material)) out << ", ocr = " << exact_number(ocr) << " (p_c = " << exact_number(s.pc) << " Pa)";
   if (!inside_yield_surface(material, s))
     t.fail(t.has("p") ? "p" : "lateral_stress_ratio", "gives an initial state outside the yield surface");
   t.reject_unknown_keys();

@@ -70,10 +70,7 @@ Rates rates(const Model& model, const Leg& leg, const Partition& part, const Vec
   if constexpr (kPlastic<Model>) {
     if (plastic) {
       r.plastic_multiplier = b.dot(r.strain) / denominator;
-      if constexpr (requires { model.hardening_exponent(); }) {
-        // eq 27 in rate form, compression-positive plastic volume −tr ε̇^p.
-        r.pc = model.hardening_exponent() * pc * (-r.plastic_multiplier * n_g.trace());
-      }
+      r.pc = model.hardening_rate(sigma, pc, r.plastic_multiplier, n_g);  // MCC: eq 27 in rate form
     }
   }
   return r;

@@ -2,8 +2,9 @@
 /// @file
 /// The reference solution of a material-point test: the continuum elastic–plastic rate equations
 ///   σ̇ = D^ep : ε̇,   D^ep = D − (D:n_g) ⊗ (n_f:D) / (n_f:D:n_g + H),
-///   ṗ_c = (1+e0)/(λ−κ) · p_c · (−tr ε̇^p),   ε̇^p = λ̇ n_g,  λ̇ = n_f:D:ε̇ / (n_f:D:n_g + H)
-/// (MCC eq 27–29; D-P eq 21–22 with H = 0; D = elasticity().at(p), the tangent moduli) integrated
+///   ṗ_c = hardening_rate(σ, p_c, λ̇, n_g),   ε̇^p = λ̇ n_g,  λ̇ = n_f:D:ε̇ / (n_f:D:n_g + H)
+/// (MCC eq 27–29, ṗ_c = (1+e0)/(λ−κ) · p_c · (−tr ε̇^p); D-P eq 21–22 with H = 0 and ṗ_c = 0; any
+/// model through its PlasticModel hooks; D = elasticity().at(p), the tangent moduli) integrated
 /// with SUNDIALS CVODE (BDF, dense Newton, rtol 1e-12: about 1e-10 relative global error on the
 /// MCC triaxial paths, 1e-8 with rtol 1e-10) under the same mixed control as the
 /// driver: at every right-hand-side evaluation the free strain rates are solved from the imposed
@@ -11,7 +12,8 @@
 /// falls on the driver's increments. The elastic→plastic transition (f = 0) and elastic unloading
 /// (λ̇ = 0) are located by CVODE's root finding; the integration is reinitialised there with the
 /// other branch, so the kink is resolved and never stepped across. Only the model's pure functions
-/// (yield, yield_gradient, flow_direction, hardening_modulus, elasticity) are used, not its update.
+/// (yield, yield_gradient, flow_direction, hardening_modulus, hardening_rate, elasticity) are used,
+/// not its update.
 #include <span>
 
 #include "constitutive/material.h"
