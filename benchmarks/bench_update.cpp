@@ -30,8 +30,12 @@ std::pair<Case, Case> cases(const Model& model) {
     return {{s, 1e-4 * Mat3::Identity()}, {s, triaxial(1e-4)}};
   } else {
     s.stress = isotropic_stress(20e3);
-    State on_cone = model.update(s, triaxial(5e-2), Mat3::Zero());  // sheared onto the cone
-    return {{s, -1e-5 * Mat3::Identity()}, {on_cone, triaxial(1e-4)}};
+    // Sheared until it yields: one shear reaches the D-P cone; Mohr–Coulomb, wider in triaxial
+    // compression, needs more (its first increments stay elastic).
+    State on_surface = model.update(s, triaxial(5e-2), Mat3::Zero());
+    for (int k = 0; k < 20 && !(on_surface.plastic_multiplier > 0.0); ++k)
+      on_surface = model.update(on_surface, triaxial(5e-2), Mat3::Zero());
+    return {{s, -1e-5 * Mat3::Identity()}, {on_surface, triaxial(1e-4)}};
   }
 }
 
