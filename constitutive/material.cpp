@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <vector>
 
 #include "constitutive/derived_constants.h"
 
@@ -11,12 +12,15 @@ Material read_material(const TableReader& table) {
   const std::string model =
       table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName, MohrCoulomb::kName});
   const Material material = [&]() -> Material {
-    if (model == DruckerPrager::kName) return DruckerPrager(DruckerPrager::Params::read(table));
-    if (model == ModifiedCamClay::kName) return ModifiedCamClay(ModifiedCamClay::Params::read(table));
-    if (model == MohrCoulomb::kName) return MohrCoulomb(MohrCoulomb::Params::read(table));
-    return LinearElastic(LinearElastic::Params::read(table));
+    try {
+      if (model == DruckerPrager::kName) return DruckerPrager(DruckerPrager::Params::read(table));
+      if (model == ModifiedCamClay::kName) return ModifiedCamClay(ModifiedCamClay::Params::read(table));
+      if (model == MohrCoulomb::kName) return MohrCoulomb(MohrCoulomb::Params::read(table));
+      return LinearElastic(LinearElastic::Params::read(table));
+    } catch (const DerivedConstantError& e) {  // the constructor's check, said of the file's key
+      table.fail_value(e.key(), format_number(e.value()), e.reason());
+    }
   }();
-  check_derived_constants(material, table);
   // Keys of other models are allowed (one scene can switch models with --set) but said to be unused.
   const auto& known = kMaterialKeys;
   for (const std::string& key : table.unread_keys()) {
@@ -55,9 +59,11 @@ bool has_preconsolidation(const Material& material) {
 namespace {
 template <class... Model>
 std::string names_with_preconsolidation(const std::variant<Model...>*) {
-  std::string names;
-  ((Model::kHasPreconsolidation ? names += (names.empty() ? "" : ", ") + std::string(Model::kName) : names), ...);
-  return names;
+  std::vector<std::string_view> names;
+  ((Model::kHasPreconsolidation ? names.push_back(Model::kName) : void()), ...);
+  std::string list;
+  for (const std::string_view name : names) list.append(list.empty() ? "" : ", ").append(name);
+  return list;
 }
 }  // namespace
 
@@ -67,6 +73,17 @@ std::string preconsolidation_models() {
 
 double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr) {
   return std::visit([&](const auto& model) { return model.initial_preconsolidation(sigma, ocr); }, material);
+}
+
+std::optional<FailureLine> triaxial_failure_line(const Material& material) {
+  return std::visit(
+      [](const auto& model) -> std::optional<FailureLine> {
+        if constexpr (PlasticModel<std::decay_t<decltype(model)>>)
+          return model.triaxial_failure_line();
+        else
+          return std::nullopt;
+      },
+      material);
 }
 
 }  // namespace soilsph

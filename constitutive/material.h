@@ -3,6 +3,7 @@
 /// The one factory from input to model: a `[material]` TOML table becomes one of the model types.
 /// Callers choose the model once (std::visit) and run code instantiated for it, so the per-particle
 /// update is a direct, inlinable call.
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -60,5 +61,8 @@ std::string preconsolidation_models();
 /// The model's initial hardening state at effective stress `sigma` (tension-positive) with
 /// overconsolidation ratio `ocr` (its initial_preconsolidation hook; 0 for models without one).
 double initial_preconsolidation(const Material& material, const Mat3& sigma, double ocr);
+/// The model's failure (critical-state) line on the triaxial-compression meridian; none for
+/// linear elasticity.
+std::optional<FailureLine> triaxial_failure_line(const Material& material);
 
 }  // namespace soilsph

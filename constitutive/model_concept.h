@@ -7,7 +7,7 @@
 /// misses a member fails here, at the registration in material.h, not deep inside a driver; and the
 /// drivers, the SPH solver, the stress test and the apps need not ask which model they have. (What
 /// is model-specific by nature stays so: a closed form describes one model, and the verification
-/// report writes the constants its plots draw for D-P and MCC.)
+/// report writes the constants of MCC's yield ellipse and void ratio for its plots.)
 ///
 /// Adding a model: a folder's worth of files in constitutive/ (its header and source in models/, its
 /// implicit return in integrators/), then one line in material.h's Material variant and its name
@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "constitutive/elasticity.h"
+#include "constitutive/failure_line.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/state.h"
 
@@ -41,7 +42,8 @@ concept ConstitutiveModel = requires(const M& model, const State& state, const M
 /// An elastic–plastic model: yield function, its gradient, the flow direction, the hardening term
 /// of the consistency condition (0 for perfect plasticity), the rate of the hardening variable for
 /// a plastic flow λ̇ n_g (the CVODE reference's ṗ_c), the stress-test marks of a state (apex,
-/// p' → 0, critical state), and the chosen integrator.
+/// p' → 0, critical state), the failure line on the triaxial-compression meridian (reports and
+/// plots), and the chosen integrator.
 template <class M>
 concept PlasticModel =
     ConstitutiveModel<M> && requires(const M& model, const State& state, const Mat3& sigma, double pc) {
@@ -52,6 +54,7 @@ concept PlasticModel =
       { model.hardening_modulus(sigma, pc) } -> std::convertible_to<double>;
       { model.hardening_rate(sigma, pc, pc, sigma) } -> std::convertible_to<double>;
       { model.marks(state) } -> std::same_as<StateMarks>;
+      { model.triaxial_failure_line() } -> std::same_as<FailureLine>;
       { model.integrator() } -> std::same_as<Integrator>;
     };
 

@@ -4,10 +4,10 @@
     plot_point.py CSV [CSV ...] [--out FILE.png] [--labels A,B,...]
 
 Panels: q - eps_a, eps_v - eps_a, the p'-q stress path with each file's yield surfaces and critical-state
-line (MCC: the initial and final ellipses from the first and last row's p_c) or Drucker-Prager cone
-(triaxial compression), e - ln p' (e = e0 - (1 + e0) eps_v, e0 from the `# material:` line; eps_v when
-no file has e0), and tau_xy - gamma_xy when some file has non-zero shear. The surfaces come from the
-CSV's `# material:` line. Compression-positive; stresses plotted in kPa, strains dimensionless.
+line (MCC: the initial and final ellipses from the first and last row's p_c) or failure line (D-P,
+Mohr-Coulomb: triaxial compression), e - ln p' (e = e0 - (1 + e0) eps_v, e0 from the `# material:` line; eps_v when
+no file has e0), and tau_xy - gamma_xy when some file has non-zero shear. The lines come from the
+CSV's `# failure line` comment (any plastic model), or for older files from its `# material:` line. Compression-positive; stresses plotted in kPa, strains dimensionless.
 Labels default to the file names (stem); the PNG to the first CSV's path with .png.
 Run with Debian's /usr/bin/python3 (matplotlib, numpy). A missing file or a CSV without the header
 row gives one `error:` line on stderr and exit status 1.
@@ -63,7 +63,10 @@ def read_point_csv(path):
     material = {}
     for line in lines:
         if line.startswith("# material:"):
-            material = parse_material(line[len("# material:"):])
+            material = {**parse_material(line[len("# material:"):]), **material}
+        if line.startswith("# failure line"):
+            numbers = re.findall(r"(slope|intercept) = ([-+0-9.eE]+)", line)
+            material["failure_line"] = tuple(float(dict(numbers)[key]) for key in ("slope", "intercept"))
     body = [line for line in lines if not line.startswith("#") and line.strip()]
     header = body[0].strip().split(",") if body else []
     if header[:len(COLUMNS)] != COLUMNS:
@@ -88,10 +91,24 @@ def critical_state_ratio(friction_angle_deg):
 
 
 def drucker_prager_cone(friction_angle_deg, cohesion):
-    """(alpha_phi, k_c) of f = sqrt(J2) + alpha_phi I1 - k_c (drucker_prager.h, eq 19)."""
+    """(slope, intercept) of the cone f = sqrt(J2) + alpha_phi I1 - k_c = 0 (drucker_prager.h, eq 19) on
+    triaxial compression, q = 3 sqrt3 alpha_phi p' + sqrt3 k_c: for files without a `# failure line`."""
     tan_phi = math.tan(math.radians(friction_angle_deg))
     root = math.sqrt(9.0 + 12.0 * tan_phi ** 2)
-    return tan_phi / root, 3.0 * cohesion / root
+    alpha, k_c = tan_phi / root, 3.0 * cohesion / root
+    return 3.0 * math.sqrt(3.0) * alpha, math.sqrt(3.0) * k_c
+
+
+def failure_line(material):
+    """(slope, intercept) of the file's failure line q = slope p' + intercept, or None."""
+    if "failure_line" in material:
+        return material["failure_line"]
+    model = material.get("model")
+    if model == "modified-cam-clay" and "friction_angle" in material:
+        return critical_state_ratio(material["friction_angle"]), 0.0
+    if model == "drucker-prager" and "friction_angle" in material:
+        return drucker_prager_cone(material["friction_angle"], material.get("cohesion", 0.0))
+    return None
 
 
 def draw_surfaces(ax, material, data, color, p_top, drawn):
@@ -99,25 +116,25 @@ def draw_surfaces(ax, material, data, color, p_top, drawn):
 
     `drawn` collects the lines already drawn, so files of one material share one CSL or cone."""
     model = material.get("model")
+    line = failure_line(material)
+    if line is None:
+        return
     p = np.linspace(0.0, p_top, 400)
-    if model == "modified-cam-clay" and "friction_angle" in material:
-        M = critical_state_ratio(material["friction_angle"])
-        if ("csl", M) not in drawn:
-            drawn.add(("csl", M))
-            ax.plot(p * KPA, M * p * KPA, color="gray", lw=1, label=f"CSL q = M p', M = {M:.3f}")
+    if (model, line) not in drawn:
+        drawn.add((model, line))
+        if model == "modified-cam-clay":
+            ax.plot(p * KPA, line[0] * p * KPA, color="gray", lw=1, label=f"CSL q = M p', M = {line[0]:.3f}")
+        else:
+            ax.plot(p * KPA, (line[0] * p + line[1]) * KPA, color=color, ls="-.", lw=1,
+                    label=f"{model} failure (compression), φ = {material.get('friction_angle', float('nan')):g}°")
+    if model == "modified-cam-clay":
+        M = line[0]
         for pc, ls, which in ((data["p_c"][0], ":", "initial"), (data["p_c"][-1], "--", "final")):
             pp = np.linspace(0.0, pc, 400)
             qq = M * np.sqrt(np.maximum(pp * (pc - pp), 0.0))
             ax.plot(pp * KPA, qq * KPA, color=color, ls=ls, lw=0.9, alpha=0.8,
                     label=f"{which} yield surface (p_c = {pc * KPA:.4g} kPa)")
             ax.plot(pp * KPA, -qq * KPA, color=color, ls=ls, lw=0.9, alpha=0.8)
-    elif model == "drucker-prager" and "friction_angle" in material:
-        alpha, k_c = drucker_prager_cone(material["friction_angle"], material.get("cohesion", 0.0))
-        if ("cone", alpha, k_c) not in drawn:
-            drawn.add(("cone", alpha, k_c))
-            # Triaxial compression: sqrt(J2) = q/sqrt3, I1 = -3p (tension-positive).
-            ax.plot(p * KPA, np.sqrt(3.0) * (3.0 * alpha * p + k_c) * KPA, color="black", ls="-.", lw=1,
-                    label=f"D-P cone (compression), φ = {material['friction_angle']:g}°")
 
 
 def void_ratio(material, data):

@@ -58,9 +58,12 @@ def draw_surfaces(ax, case, reference):
             pcs["final yield surface"] = reference["p_c"][-1]
         p_top = max([p_top] + list(pcs.values()))
     p = np.linspace(0.0, p_top, 400)
+    if "failure_slope" in case:  # every plastic model: q = slope p' + intercept (failure_line.h)
+        label = "CSL q = M p'" if case["model"] == "modified-cam-clay" else f"{case['model']} failure (compression)"
+        ax.plot(p * KPA, (case["failure_slope"] * p + case["failure_intercept"]) * KPA, color="gray", lw=1,
+                label=label)
     if case["model"] == "modified-cam-clay":
         M = case["M"]
-        ax.plot(p * KPA, M * p * KPA, color="gray", lw=1, label="CSL q = M p'")
         if case["path"] == "oedometer" and "eta_k0" in case:
             ax.plot(p * KPA, case["eta_k0"] * p * KPA, color="tab:green", lw=1, ls="--",
                     label=f"K0 line, η = {case['eta_k0']:.3f}")
@@ -69,10 +72,6 @@ def draw_surfaces(ax, case, reference):
             qq = M * np.sqrt(np.maximum(pp * (pc - pp), 0.0))
             ax.plot(pp * KPA, qq * KPA, color="gray", ls=ls, lw=1, label=label)
             ax.plot(pp * KPA, -qq * KPA, color="gray", ls=ls, lw=1)
-    elif case["model"] == "drucker-prager":
-        # f = q/sqrt3 - 3 alpha p - k_c = 0 on triaxial compression (sqrt J2 = q/sqrt3, I1 = -3p).
-        q = np.sqrt(3.0) * (3.0 * case["alpha_phi"] * p + case["k_c"])
-        ax.plot(p * KPA, q * KPA, color="gray", lw=1, label="D-P cone (compression)")
 
 
 def plot_case(case, folder):

@@ -123,7 +123,7 @@ std::vector<std::string> provenance(const PointOptions& o, const std::string& ma
   using namespace verification;
   const bool reference = integrator == kReferenceIntegrator;
   const Material used = reference ? material : with_integrator(material, parse_integrator(integrator));
-  return {
+  std::vector<std::string> lines = {
       std::string("soilsph ") + kVersion,
       "command: " + invocation(),
       "material: " + material_source + (o.overrides.empty() ? "" : " with --set") + ": " + describe_material(used),
@@ -132,6 +132,10 @@ std::vector<std::string> provenance(const PointOptions& o, const std::string& ma
                      : o.integrator.empty() ? " (the material's integrator key)" : ""),
       test,
   };
+  if (const auto line = triaxial_failure_line(material))  // for plots, whichever the model
+    lines.push_back("failure line (triaxial compression): q = slope p' + intercept; slope = " +
+                    exact_number(line->slope) + "; intercept = " + exact_number(line->intercept) + " Pa");
+  return lines;
 }
 
 void write(const PointOptions& o, const verification::PointCurve& curve,

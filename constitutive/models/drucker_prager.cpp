@@ -3,6 +3,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "constitutive/derived_constants.h"
 #include "constitutive/integrators/integrate.h"
 #include "constitutive/material_limits.h"
 #include "constitutive/tangent.h"
@@ -44,6 +45,13 @@ DruckerPrager::DruckerPrager(const Params& params)
     const double tan_psi = std::tan(psi);
     alpha_psi_ = tan_psi / std::sqrt(9.0 + 12.0 * tan_psi * tan_psi);  // eq 19 with ψ for φ
   }
+  require_constant_moduli(kName, params.young_modulus, elasticity_);
+  require_derived(kName, "friction_angle", params.friction_angle,
+                  "alpha_phi = tan(phi)/sqrt(9 + 12 tan^2(phi)) (eq 19)", alpha_phi_, "");
+  require_derived(kName, "cohesion", params.cohesion, "k_c = 3c/sqrt(9 + 12 tan^2(phi)) (eq 19)", k_c_, "Pa", true);
+  // The apex I1 = k_c/α_φ, where tension is cut off (eq 30–31); 3c/tan φ, so a small φ overflows it.
+  require_derived(kName, "cohesion", params.cohesion, "the apex's I1 = 3c/tan(phi)", apex_first_invariant(), "Pa",
+                  true);
 }
 
 std::string DruckerPrager::describe_constants() const {

@@ -8,9 +8,11 @@
 ///              "paper-eq20"         α_ψ = 3 sinψ, the potential as printed (eq 20)
 /// Stresses are tension-positive, so I1 < 0 in compression and the cone's apex is at I1 = k_c/α_φ;
 /// α_ψ > 0 makes the plastic volume grow (dilate).
+#include <cmath>
 #include <string>
 
 #include "constitutive/elasticity.h"
+#include "constitutive/failure_line.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/models/perfect_plasticity.h"
 #include "constitutive/parameters.h"
@@ -74,6 +76,11 @@ class DruckerPrager : public PerfectPlasticity {
   // marks (the apex) from PerfectPlasticity.
   /// The derived constants, one "  name = value" line each (`soilsph material`).
   std::string describe_constants() const;
+  /// The cone on triaxial compression: √J2 = q/√3 and I1 = −3p′ in f = 0 give
+  /// q = 3√3 α_φ p′ + √3 k_c.
+  FailureLine triaxial_failure_line() const {
+    return {3.0 * std::sqrt(3.0) * alpha_phi_, std::sqrt(3.0) * k_c_};
+  }
   /// The paper's stress correction: tension cracking beyond the apex (eq 30–31, apex at
   /// I1 = k_c/α_φ) then scaling of the deviator back to the cone (eq 32–33).
   Mat3 correct(const Mat3& sigma, double pc = 0.0) const;

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "constitutive/derived_constants.h"
 #include "constitutive/material_limits.h"
 
 namespace soilsph {
@@ -13,6 +14,11 @@ void LinearElasticParams::fields(const Io& io) {
   io.number("poisson_ratio", poisson_ratio, Range::open(-1.0, 0.5));
 }
 template void LinearElasticParams::fields(const FieldChecker&);
+
+LinearElastic::LinearElastic(const Params& params)
+    : params_(validated(params, kName)), elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)) {
+  require_constant_moduli(kName, params.young_modulus, elasticity_);
+}
 
 std::string LinearElastic::describe_constants() const {
   const Moduli D = elasticity_.at(0.0);

@@ -27,8 +27,7 @@ class LinearElastic : public NoHardeningVariable {
   using Params = LinearElasticParams;
   static constexpr std::string_view kName = "linear-elastic";
 
-  explicit LinearElastic(const Params& params)
-      : params_(validated(params, kName)), elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)) {}
+  explicit LinearElastic(const Params& params);
 
   const Params& params() const { return params_; }
   const Elasticity& elasticity() const { return elasticity_; }

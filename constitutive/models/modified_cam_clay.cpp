@@ -3,6 +3,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "constitutive/derived_constants.h"
 #include "constitutive/integrators/integrate.h"
 #include "constitutive/material_limits.h"
 #include "constitutive/tangent.h"
@@ -53,6 +54,19 @@ ModifiedCamClay::ModifiedCamClay(const Params& params)
       theta_((1.0 + params.initial_void_ratio) / (params.compression_index - params.swelling_index)) {
   const double sin_phi = std::sin(params.friction_angle * std::numbers::pi / 180.0);
   M_ = 6.0 * sin_phi / (3.0 - sin_phi);  // eq 26
+  require_derived(kName, "friction_angle", params.friction_angle, "M = 6 sin(phi)/(3 - sin(phi)) (eq 26)", M_, "");
+  require_derived(kName, "initial_void_ratio", params.initial_void_ratio, "(1+e0)/(lambda-kappa) (eq 27)", theta_,
+                  "");
+  if (params.elasticity == Elasticity::Kind::Constant) {
+    require_constant_moduli(kName, params.young_modulus, elasticity_);
+    return;
+  }
+  // The smallest pressure-dependent moduli, at the floor: K = p_floor (1+e0)/κ.
+  const Moduli D = elasticity_.at(0.0);
+  require_derived(kName, "elastic_pressure_floor", params.elastic_pressure_floor, "K = p_floor (1+e0)/kappa", D.K,
+                  "Pa");
+  require_derived(kName, "elastic_pressure_floor", params.elastic_pressure_floor, "G = 3K(1-2 nu)/(2(1+nu))", D.G,
+                  "Pa");
 }
 
 double ModifiedCamClay::yield(const Mat3& sigma, double pc) const {

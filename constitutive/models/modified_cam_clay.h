@@ -9,6 +9,7 @@
 #include <string>
 
 #include "constitutive/elasticity.h"
+#include "constitutive/failure_line.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/parameters.h"
 #include "constitutive/state.h"
@@ -96,6 +97,8 @@ class ModifiedCamClay {
   StateMarks marks(const State& s) const;
   /// The derived constants, one "  name = value" line each (`soilsph material`).
   std::string describe_constants() const;
+  /// The critical-state line q = M p′ (eq 26).
+  FailureLine triaxial_failure_line() const { return {M_, 0.0}; }
   /// The paper's correction (eq 34–35) done as its text describes: move (p, q) along the line to the
   /// ellipse's centre (p_c/2, 0) until it meets the surface; p_c is kept. The printed β, θ of eq 35
   /// are not that point (paper-notes), so the intersection is derived here:

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "constitutive/derived_constants.h"
 #include "constitutive/integrators/integrate.h"
 #include "constitutive/material_limits.h"
 #include "constitutive/tangent.h"
@@ -40,7 +41,13 @@ MohrCoulomb::MohrCoulomb(const Params& params)
       elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)),
       sin_phi_(std::sin(params.friction_angle * kDegree)),
       sin_psi_(std::sin(params.dilatancy_angle * kDegree)),
-      cohesion_term_(2.0 * params.cohesion * std::cos(params.friction_angle * kDegree)) {}
+      cohesion_term_(2.0 * params.cohesion * std::cos(params.friction_angle * kDegree)) {
+  require_constant_moduli(kName, params.young_modulus, elasticity_);
+  require_derived(kName, "friction_angle", params.friction_angle, "sin(phi)", sin_phi_, "");
+  // The apex c cot(phi), where the pyramid closes; a small φ overflows it.
+  require_derived(kName, "cohesion", params.cohesion, "the apex's principal stress c cot(phi)", apex_stress(), "Pa",
+                  true);
+}
 
 std::string MohrCoulomb::describe_constants() const {
   const Moduli D = elasticity_.at(0.0);

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "constitutive/elasticity.h"
+#include "constitutive/failure_line.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/models/perfect_plasticity.h"
 #include "constitutive/parameters.h"
@@ -90,6 +91,11 @@ class MohrCoulomb : public PerfectPlasticity {
   // marks (the apex) from PerfectPlasticity.
   /// The derived constants, one "  name = value" line each (`soilsph material`).
   std::string describe_constants() const;
+  /// Triaxial compression, σ1 = p′ + 2q/3 and σ3 = p′ − q/3 (compression-positive) in
+  /// σ1 − σ3 = 2c cosφ + (σ1 + σ3) sinφ: q = (6 sinφ p′ + 6c cosφ)/(3 − sinφ).
+  FailureLine triaxial_failure_line() const {
+    return {6.0 * sin_phi_ / (3.0 - sin_phi_), 3.0 * cohesion_term_ / (3.0 - sin_phi_)};
+  }
 
   State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
   /// ∂σ/∂Δε of update() without spin: the analytic consistent tangent for `implicit`; central

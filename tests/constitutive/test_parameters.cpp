@@ -296,6 +296,27 @@ TEST_CASE("a model built in code from bad parameters throws, naming the key", "[
   CHECK_THROWS_WITH(LinearElastic(LinearElastic::Params{}), Contains("linear-elastic parameters: density = 0"));
 }
 
+TEST_CASE("a model built in code checks its derived constants, as a file's material", "[parameters]") {
+  DruckerPrager::Params dp;
+  dp.density = 2000.0, dp.young_modulus = 5e-324, dp.poisson_ratio = 0.3, dp.friction_angle = 30.0;
+  CHECK_THROWS_WITH(DruckerPrager(dp), Contains("drucker-prager parameters: young_modulus = 4.94066e-324 gives "
+                                                "G = E/(2(1+nu)) = 0 Pa, which must be finite and > 0"));
+  dp.young_modulus = 1e6, dp.friction_angle = 1e-300, dp.cohesion = 1e7;  // the apex 3c/tan φ overflows
+  CHECK_THROWS_WITH(DruckerPrager(dp), Contains("cohesion = 1e7 gives the apex's I1"));
+
+  MohrCoulomb::Params mc;
+  mc.density = 2000.0, mc.young_modulus = 1e6, mc.poisson_ratio = 0.3, mc.friction_angle = 1e-300;
+  mc.cohesion = 1e7;  // c cot φ overflows
+  CHECK_THROWS_WITH(MohrCoulomb(mc), Contains("mohr-coulomb parameters: cohesion = 1e7 gives the apex"));
+
+  ModifiedCamClay::Params mcc;
+  mcc.density = 2000.0, mcc.poisson_ratio = 0.3, mcc.friction_angle = 35.0;
+  mcc.compression_index = 0.085, mcc.swelling_index = 0.019, mcc.initial_void_ratio = 1e308;
+  CHECK_THROWS_WITH(ModifiedCamClay(mcc), Contains("initial_void_ratio = 1e308 gives (1+e0)/(lambda-kappa)"));
+  CHECK_THROWS_AS(ModifiedCamClay(mcc), ParameterError);
+  CHECK_THROWS_WITH(LinearElastic({2000.0, 5e-324, 0.3}), Contains("linear-elastic parameters: young_modulus"));
+}
+
 TEST_CASE("a model built in code has the defaults of an input file", "[parameters]") {
   const DruckerPrager::Params dp_code;
   const auto& dp_toml = std::get<DruckerPrager>(from_text(

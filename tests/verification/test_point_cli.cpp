@@ -233,12 +233,17 @@ TEST_CASE("soilsph point records version, command, material, integrator and test
   std::vector<std::string> comments;
   for (std::string line; std::getline(csv, line) && line.starts_with("# ");)
     comments.push_back(line.substr(2));
-  REQUIRE(comments.size() == 6);
+  REQUIRE(comments.size() == 7);
   CHECK(comments[1] == std::string("soilsph ") + soilsph::kVersion);
   CHECK(comments[2] == "command: soilsph point " + args);
   CHECK(comments[4] == "integrator: substep");
   CHECK(comments[5] ==
         "test: triaxial-drained; p_initial = 50000 Pa; ocr = 2; eps_a targets 0.02 0.01 (5 increments each)");
+  // MCC's failure line is its CSL, M = 6 sin 30° / (3 − sin 30°) = 1.2 (eq 26) with φ set to 30°.
+  const std::string line = "failure line (triaxial compression): q = slope p' + intercept; slope = ";
+  REQUIRE(comments[6].starts_with(line));
+  CHECK(std::stod(comments[6].substr(line.size())) == Approx(1.2).epsilon(1e-14));
+  CHECK(comments[6].ends_with("; intercept = 0 Pa"));
   const std::string prefix = "material: " + material + " with --set: ";
   REQUIRE(comments[3].starts_with(prefix));
   std::string table = "[material]\n" + comments[3].substr(prefix.size());

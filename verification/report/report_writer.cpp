@@ -43,7 +43,8 @@ void write_closed_form_csv(const fs::path& path, const std::vector<ReferencePoin
     out << r.eps_a << ',' << r.eps_v << ',' << r.p << ',' << r.q << ',' << r.p_c << '\n';
 }
 
-/// Model constants the plots need: the yield surface and the critical-state (or failure) line.
+/// Model constants the plots need: the failure (critical-state) line of any plastic model, and
+/// MCC's yield ellipse and void ratio.
 std::string model_json(const Material& material) {
   std::ostringstream s;
   s << std::setprecision(std::numeric_limits<double>::max_digits10);
@@ -51,8 +52,6 @@ std::string model_json(const Material& material) {
       [&](const auto& m) {
         using T = std::decay_t<decltype(m)>;
         s << "\"model\": \"" << T::kName << "\"";
-        if constexpr (std::is_same_v<T, DruckerPrager>)
-          s << ", \"alpha_phi\": " << m.alpha_phi() << ", \"k_c\": " << m.k_c();
         if constexpr (std::is_same_v<T, ModifiedCamClay>)
           s << ", \"M\": " << m.M() << ", \"e0\": " << m.params().initial_void_ratio
             << ", \"lambda\": " << m.params().compression_index
@@ -62,6 +61,8 @@ std::string model_json(const Material& material) {
             s << ", \"eta_k0\": " << cam_clay_k0_stress_ratio(m);  // the K0 line of the oedometer plots
       },
       material);
+  if (const auto line = triaxial_failure_line(material))
+    s << ", \"failure_slope\": " << line->slope << ", \"failure_intercept\": " << line->intercept;
   return s.str();
 }
 
