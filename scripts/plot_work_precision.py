@@ -31,7 +31,20 @@ def main(directory):
         panels[(r["material"], r["path"])][r["integrator"]].append(r)
     materials = sorted({k[0] for k in panels}, reverse=True)
     paths = ["triaxial-drained", "triaxial-undrained", "oedometer"]
-    fig, axes = plt.subplots(len(materials), len(paths), figsize=(15, 4.2 * len(materials)), squeeze=False)
+    # Driver sub-step variants ("+path(TOL)", the K ~ p cases): the scheme keeps its colour, the path
+    # tolerance sets the line style, and the legends move outside the panels.
+    many = any("+path(" in r["integrator"] for r in rows)
+    styles = {}
+    base_colours = {}
+
+    def style(integrator):
+        base, _, path = integrator.partition("+path(")
+        colour = base_colours.setdefault(base, f"C{len(base_colours) % 10}")
+        dash = styles.setdefault(path, ["-", "--", ":", "-."][len(styles) % 4])
+        return colour, dash
+
+    fig, axes = plt.subplots(len(materials), len(paths), figsize=(24 if many else 15, 4.2 * len(materials)),
+                             squeeze=False)
     floor = 1e-16
     for i, material in enumerate(materials):
         for j, path in enumerate(paths):
@@ -40,12 +53,16 @@ def main(directory):
                 points = sorted(points, key=lambda r: r["increments"])
                 xs = [p["cpu_seconds"] for p in points if math.isfinite(p["error"])]
                 ys = [max(p["error"], floor) for p in points if math.isfinite(p["error"])]
-                ax.loglog(xs, ys, marker="o", markersize=3, label=integrator)
+                colour, dash = style(integrator)
+                ax.loglog(xs, ys, marker="o", markersize=3, label=integrator, color=colour, linestyle=dash)
             ax.set_title(f"{material}, {path} (to eps_a = 0.1)", fontsize=9)
             ax.set_xlabel("CPU time per path (s)")
             ax.set_ylabel("max relative error in q, p' vs CVODE")
             ax.grid(True, which="both", alpha=0.3)
-            ax.legend(fontsize=7)
+            if many:
+                ax.legend(fontsize=5, loc="upper left", bbox_to_anchor=(1.0, 1.0))
+            else:
+                ax.legend(fontsize=7)
     fig.suptitle("Work-precision of the stress integrators (1 to 10^4 increments per path; "
                  "p', q compression-positive)", fontsize=11)
     fig.tight_layout()

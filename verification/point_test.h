@@ -37,6 +37,11 @@ inline Range ocr() {
 inline Range strain() {
   return Range::open(-kMaxStrain, kMaxStrain);
 }
+/// Driver sub-steps' relative tolerance when on (0 is off): below 1e-12 round-off of the stresses
+/// dominates the step-doubling estimate; above 1e-2 the control would accept visibly wrong paths.
+inline Range path_tolerance() {
+  return Range::closed(1e-12, 1e-2);
+}
 }  // namespace point_limits
 
 /// The laboratory paths the driver knows (see paths/load_path.h for what each imposes).
@@ -53,6 +58,8 @@ struct PointTest {
   std::vector<Mat3> strain_increments;         ///< StrainPath only: tension-positive increments
   /// StrainPath only, optional: where each increment was read ("FILE:LINE"), to name it in messages.
   std::vector<std::string> strain_increment_sources;
+  /// Driver sub-steps of mixed-control increments (Programme::path_tolerance): 0 = off.
+  double path_tolerance = 0.0;
 };
 
 /// One row per increment including the initial state; compression-positive, SI.

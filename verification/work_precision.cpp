@@ -46,9 +46,10 @@ struct Variant {
   std::string integrator;
   Material material;
   std::string label;
+  double path_tolerance = 0.0;
 };
 
-std::vector<Variant> variants(const Material& material, const WorkPrecisionOptions& options) {
+std::vector<Variant> variants(const Material& material, const WorkPrecisionOptions& options, bool mixed) {
   std::vector<Variant> out;
   for (const std::string& integrator : options.integrators) {
     const bool error_controlled = std::visit(
@@ -72,6 +73,20 @@ std::vector<Variant> variants(const Material& material, const WorkPrecisionOptio
       out.push_back({integrator, with_substep_tolerance(material, tolerance), label.str()});
     }
   }
+  if (!mixed) return out;
+  // The driver's sub-steps act on the path, so they are paired with the schemes that can follow it
+  // accurately (explicit's own first-order error would dominate).
+  const std::size_t plain = out.size();
+  for (double path_tolerance : options.path_tolerances)
+    for (std::size_t k = 0; k < plain; ++k) {
+      if (out[k].integrator == "explicit") continue;
+      std::ostringstream label;
+      label << out[k].label << "+path(" << path_tolerance << ')';
+      Variant v = out[k];
+      v.label = label.str();
+      v.path_tolerance = path_tolerance;
+      out.push_back(std::move(v));
+    }
   return out;
 }
 }  // namespace
@@ -83,7 +98,9 @@ std::vector<WorkPrecisionRow> work_precision(const std::string& material_name, c
   for (int n : options.increments) {
     test.increments = n;
     const PointCurve reference = run_point_test(material, test, kReferenceIntegrator);
-    for (const auto& [integrator, run_material, label] : variants(material, options)) {
+    const bool mixed = test.path == LoadPath::TriaxialDrained || test.path == LoadPath::TriaxialUndrained;
+    for (const auto& [integrator, run_material, label, path_tolerance] : variants(material, options, mixed)) {
+      test.path_tolerance = path_tolerance;
       WorkPrecisionRow row{material_name, std::string(load_path_name(test.path)), label, n, 0, 0, 0, 0};
       std::vector<double> times;
       PointCurve curve;
@@ -107,6 +124,7 @@ std::vector<WorkPrecisionRow> work_precision(const std::string& material_name, c
       rows.push_back(row);
       if (on_row) on_row(row);
     }
+    test.path_tolerance = 0.0;
   }
   return rows;
 }

@@ -28,6 +28,10 @@ struct WorkPrecisionOptions {
   std::vector<double> substep_tolerances = {1e-4, 1e-6, 1e-8};
   /// "implicit" also runs once per MCC `implicit_tolerance` here (labelled e.g. "implicit(0.001)").
   std::vector<double> implicit_tolerances = {1e-2, 1e-3, 1e-4};
+  /// Driver sub-steps (PointTest::path_tolerance): on paths with stress-imposed components (the
+  /// triaxial ones) every variant but `explicit` also runs once per tolerance here, labelled e.g.
+  /// "implicit(0.0001)+path(1e-05)". Empty (the default): none.
+  std::vector<double> path_tolerances;
   double min_seconds = 0.02;  ///< repeat a path until this much CPU time (at least 3, at most 200 times)
 };
 

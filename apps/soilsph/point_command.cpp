@@ -28,6 +28,7 @@ struct PointOptions {
   std::string strain_max = "0.1";  ///< comma-separated targets, checked by list_in_range
   int increments = 100;
   std::string integrator;  ///< empty: the material's `integrator` key
+  double path_tolerance = 0.0;  ///< driver sub-steps (verification/driver/path_substeps.h); 0: off
   std::string out;
   std::vector<std::string> overrides;
 };
@@ -81,6 +82,7 @@ verification::PointTest point_test(const PointOptions& o, bool legs_given) {
   test.ocr = o.ocr;
   test.strain_targets = split_numbers(o.strain_max);
   test.increments = o.increments;
+  test.path_tolerance = o.path_tolerance;
   return test;
 }
 
@@ -132,6 +134,11 @@ std::vector<std::string> provenance(const PointOptions& o, const std::string& ma
                      : o.integrator.empty() ? " (the material's integrator key)" : ""),
       test,
   };
+  // Only when used, so that a run without it writes the same file as before.
+  if (o.path_tolerance > 0.0)
+    lines.push_back("driver sub-steps: path_tolerance = " + exact_number(o.path_tolerance) +
+                    " (each increment with stress-imposed components split by step doubling until its "
+                    "estimated error <= path_tolerance; one row per requested increment)");
   if (const auto line = triaxial_failure_line(material))  // for plots, whichever the model
     lines.push_back("failure line (triaxial compression): q = slope p' + intercept; slope = " +
                     exact_number(line->slope) + "; intercept = " + exact_number(line->intercept) + " Pa");
@@ -172,7 +179,8 @@ void run_programme_file(const PointOptions& o, bool options_given) {
     throw ParameterError(o.material_path +
                          " is a programme: --test, --strain-path, --p-initial, --ocr, --strain-max and --increments "
                          "do not apply (its [initial] table and [[leg]] tables say it all)");
-  const verification::ProgrammeFile file = verification::read_programme_file(o.material_path, o.overrides);
+  verification::ProgrammeFile file = verification::read_programme_file(o.material_path, o.overrides);
+  file.programme.path_tolerance = o.path_tolerance;
   const std::string integrator = integrator_to_run(o, file.material);
   const verification::PointCurve curve = run_checked(o, file.material, o.material_path, file.programme, integrator);
   write(o, curve,
@@ -181,6 +189,9 @@ void run_programme_file(const PointOptions& o, bool options_given) {
 
 void run(const PointOptions& o, bool legs_given, bool test_options_given) {
   check_integrator(o.integrator);
+  if (o.path_tolerance > 0.0 && o.integrator == verification::kReferenceIntegrator)
+    throw ParameterError("--path-tolerance does not apply to --integrator cvode (the reference holds the "
+                         "imposed stresses throughout)");
   if (verification::is_programme_file(o.material_path)) return run_programme_file(o, legs_given || test_options_given);
   if (o.test.empty()) throw ParameterError("--test is required (or give a programme file, see docs/programmes.md)");
   const verification::PointTest test = point_test(o, legs_given);
@@ -242,6 +253,11 @@ void add_point_command(CLI::App& app) {
   cmd->add_option("--integrator", o->integrator,
                   "stress integrator: " + integrators +
                       "or cvode (the reference); replaces the material's (default: the material's integrator key)");
+  cmd->add_option("--path-tolerance", o->path_tolerance,
+                  "driver sub-steps: split each increment with stress-imposed components (drained/undrained "
+                  "triaxial, programme legs) until its step-doubling error estimate is <= this, relative "
+                  "(default 0: off, one solve per increment)")
+      ->check(in_range(limits::path_tolerance()));
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,
                   "override a material key, e.g. --set material.friction_angle=30 (repeatable)");

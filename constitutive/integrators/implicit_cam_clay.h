@@ -37,13 +37,13 @@ State implicit_return(const ModifiedCamClay& model, const State& start, const Ma
                       Mat6* tangent = nullptr, double* local_error = nullptr);
 
 /// The `implicit` update (no spin). With `implicit_tolerance` = 0 (the default) one implicit_return.
-/// Otherwise error-controlled sub-incrementation: the increment is split into returns whose local
-/// error estimate R ≤ implicit_tolerance, where R is half the difference between the stress (and
-/// p_c) changes of forward and backward Euler over the sub-increment, ½Δλ‖D:(n(σ_{n+1}) − n(σ_t))‖
-/// relative to the stress (Sloan, Abbo & Sheng 2001's estimate, with implicit stages); the
-/// accepted result is the midpoint one, of higher order than the estimate. An increment that needs
-/// no split costs one return, as without control. The tangent is the analytic one when the
-/// increment is not split, else central differences of the composed returns with the split frozen.
+/// Otherwise error-controlled sub-incrementation: a sub-increment is accepted when the Euler
+/// difference R = ½Δλ‖D:(n(σ_{n+1}) − n(σ_t))‖ (relative to the stress; Sloan, Abbo & Sheng 2001's
+/// estimate with implicit stages, pessimistic for the midpoint) is ≤ implicit_tolerance, or else when
+/// the step-doubling estimate ‖X(h) − X(h/2 + h/2)‖/3 of the midpoint's own O(h³) local error is;
+/// then the two half returns are kept. An increment that needs no split costs one return, as without
+/// control. The tangent is the analytic one of the single return over the whole increment (exact when
+/// the increment is not split, an approximation for the driver's Newton otherwise).
 /// Measured against CVODE and `substep`: docs/integrators.md.
 State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
                       Mat6* tangent = nullptr);

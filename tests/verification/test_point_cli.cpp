@@ -279,3 +279,26 @@ TEST_CASE("soilsph point records version, command, material, integrator and test
                     " (2 rows; one increment each)\n") != std::string::npos);
   CHECK(header.find("\n# integrator: cvode (the CVODE reference") != std::string::npos);
 }
+
+TEST_CASE("soilsph point --path-tolerance: recorded in the header, one row per increment, range checked",
+          "[cli][path-substeps]") {
+  TempDir dir;
+  const fs::path out = dir.path / "curve.csv", log = dir.path / "log";
+  const std::string material = kSource + "/data/materials/mcc-table1.toml";
+  const std::string base = material + " --test triaxial-drained --strain-max 0.02 --increments 4 --integrator implicit";
+  REQUIRE(point(base + " --path-tolerance 1e-5 --out " + out.string(), log) == 0);
+  const std::string csv = read(out);
+  CHECK(csv.find("\n# driver sub-steps: path_tolerance = 0.00001 (") != std::string::npos);
+  std::istringstream rows(csv);
+  int data_rows = -1;  // the column row
+  for (std::string line; std::getline(rows, line);)
+    if (!line.starts_with("#")) ++data_rows;
+  CHECK(data_rows == 5);  // the initial state and 4 increments
+  // Without the option the header says nothing of sub-steps (files as before).
+  REQUIRE(point(base + " --out " + out.string(), log) == 0);
+  CHECK(read(out).find("sub-steps") == std::string::npos);
+  CHECK(point(base + " --path-tolerance 0.5", log) == 2);
+  CHECK(read(log).find("--path-tolerance: 0.5 is out of range (allowed: 1e-12 <= value <= 0.01)") != std::string::npos);
+  CHECK(point(material + " --test triaxial-drained --integrator cvode --path-tolerance 1e-4", log) == 2);
+  CHECK(read(log).find("--path-tolerance does not apply to --integrator cvode") != std::string::npos);
+}

@@ -19,6 +19,7 @@
 
 #include "constitutive/tangent.h"
 #include "verification/driver/mixed_control_algebra.h"
+#include "verification/driver/path_substeps.h"
 #include "verification/driver/point_history.h"
 
 namespace soilsph::verification {
@@ -27,6 +28,12 @@ struct MixedControlOptions {
   double tolerance = 1e-10;  ///< relative residual of the imposed stresses
   int max_iterations = 50;
   int max_splits = 4;  ///< halvings of an increment whose Newton fails (up to 2^max_splits parts)
+  /// Driver sub-steps (path_substeps.h): 0 (the default) solves each increment of a leg with stress-
+  /// imposed components once, as before; > 0 splits it into sub-steps until the step-doubling
+  /// estimate of the increment's error is ≤ this (relative). Strain-controlled legs are never split
+  /// (their path is exact).
+  double path_tolerance = 0.0;
+  int max_path_substeps = 4096;  ///< per increment
 };
 
 namespace detail {
@@ -150,13 +157,18 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
 }
 
 /// Runs every leg from `initial`: one sample per increment, the initial state first; a failed
-/// increment throws IncrementError. The imposed
+/// increment throws IncrementError. With options.path_tolerance > 0 an increment of a leg with
+/// stress-imposed components is done in error-controlled sub-steps (path_substeps.h), still one
+/// sample per increment. The imposed
 /// stresses are accumulated as targets (not added to the last solved stress), so the residuals
 /// left by each Newton solve do not drift. A drained leg starts with u = 0.
 template <class Model>
 PointHistory drive_mixed_control(const Model& model, const State& initial, std::span<const Leg> legs,
                                  const MixedControlOptions& options = {}) {
   PointHistory history{{Mat3::Zero(), initial}};
+  const auto solve = [&](const State& from, const Leg& sub, const Vec6& sub_target, Vec6& d, double& u) {
+    return mixed_control_increment(model, from, sub, sub_target, d, u, options);
+  };
   Vec6 target = stress_to_voigt(initial.stress);
   std::array<bool, 6> held{};
   bool was_undrained = false;
@@ -166,6 +178,8 @@ PointHistory drive_mixed_control(const Model& model, const State& initial, std::
     // effective stresses reached.
     if (leg.undrained != was_undrained) held = {};
     was_undrained = leg.undrained;
+    const bool path_control = options.path_tolerance > 0.0 && Partition(leg).n_free > 0;
+    PathSubsteps substeps;  // each leg starts from one sub-step pair (1, 2)
     for (int k = 0; k < leg.increments; ++k) {
       const PointSample& last = history.back();
       double u = leg.undrained ? last.pore_pressure : 0.0;
@@ -179,7 +193,10 @@ PointHistory drive_mixed_control(const Model& model, const State& initial, std::
       held = leg.stress_imposed;
       Vec6 strain_increment;
       try {
-        State next = mixed_control_increment(model, last.state, leg, target, strain_increment, u, options);
+        State next = path_control
+                         ? path_controlled_increment(solve, last.state, leg, target, options.path_tolerance,
+                                                     options.max_path_substeps, substeps, strain_increment, u)
+                         : mixed_control_increment(model, last.state, leg, target, strain_increment, u, options);
         history.push_back({last.strain + strain_from_voigt(strain_increment), next, u});
       } catch (const std::runtime_error& e) {
         throw IncrementError(e.what(), l, k);

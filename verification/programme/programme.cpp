@@ -87,6 +87,11 @@ Programme programme_of(const Material& material, const PointTest& test) {
   programme.initial.stress = isotropic_stress(test.p_initial);
   programme.initial.pc = initial_preconsolidation(material, programme.initial.stress, test.ocr);
   programme.legs_are_rows = test.path == LoadPath::StrainPath;
+  if (!(test.path_tolerance == 0.0 || point_limits::path_tolerance().contains(test.path_tolerance)))
+    throw std::invalid_argument("path_tolerance = " + format_number(test.path_tolerance) +
+                                " is out of range (allowed: 0 (off) or " + point_limits::path_tolerance().describe() +
+                                ")");
+  programme.path_tolerance = test.path_tolerance;
   for (std::size_t l = 0; l < programme.legs.size(); ++l) programme.leg_names.push_back(describe_leg(test, l));
   return programme;
 }
@@ -98,8 +103,11 @@ PointCurve run_programme(const Material& material, const Programme& programme, s
       history = cvode_reference(material, programme.initial, programme.legs);
     } else {
       const Material chosen = with_integrator(material, parse_integrator(integrator));
+      MixedControlOptions options;
+      options.path_tolerance = programme.path_tolerance;
       history = std::visit(
-          [&](const auto& model) { return drive_mixed_control(model, programme.initial, programme.legs); }, chosen);
+          [&](const auto& model) { return drive_mixed_control(model, programme.initial, programme.legs, options); },
+          chosen);
     }
   } catch (const IncrementError& e) {
     throw std::runtime_error(describe(programme, e.leg, e.increment) + ": " + e.reason);

@@ -21,6 +21,9 @@ struct Programme {
   /// strain-path row ("FILE:LINE").
   std::vector<std::string> leg_names;
   bool legs_are_rows = false;
+  /// Driver sub-steps (verification/driver/path_substeps.h): 0 = off, one solve per increment;
+  /// else the relative tolerance of their step-doubling control. The CVODE reference ignores it.
+  double path_tolerance = 0.0;
 };
 
 /// The programme of a built-in test (validated; std::invalid_argument as run_point_test says).
