@@ -180,11 +180,14 @@ void run_programme_file(const PointOptions& o, bool options_given) {
                          " is a programme: --test, --strain-path, --p-initial, --ocr, --strain-max and --increments "
                          "do not apply (its [initial] table and [[leg]] tables say it all)");
   verification::ProgrammeFile file = verification::read_programme_file(o.material_path, o.overrides);
-  file.programme.path_tolerance = o.path_tolerance;
   const std::string integrator = integrator_to_run(o, file.material);
-  const verification::PointCurve curve = run_checked(o, file.material, o.material_path, file.programme, integrator);
-  write(o, curve,
-        provenance(o, file.material_source, file.material, integrator, "programme: " + file.description));
+  PointOptions used = o;  // the file's path_tolerance unless --path-tolerance is given; CVODE needs none
+  if (o.path_tolerance == 0.0) used.path_tolerance = file.programme.path_tolerance;
+  if (integrator == verification::kReferenceIntegrator) used.path_tolerance = 0.0;
+  file.programme.path_tolerance = used.path_tolerance;
+  const verification::PointCurve curve = run_checked(used, file.material, o.material_path, file.programme, integrator);
+  write(used, curve,
+        provenance(used, file.material_source, file.material, integrator, "programme: " + file.description));
 }
 
 void run(const PointOptions& o, bool legs_given, bool test_options_given) {

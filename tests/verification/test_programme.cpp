@@ -141,6 +141,21 @@ stress = { yy = "hold", zz = "hold" }
   CHECK(curve_difference(a, b) < 1e-12);
 }
 
+TEST_CASE("a programme file may ask for driver sub-steps (path_tolerance), within their range", "[programme]") {
+  const std::string legs = "\n[initial]\np = 100e3\n[[leg]]\nstrain = { xx = 0.01 }\nstress = { yy = \"hold\" }\n";
+  CHECK(read_programme_file(write_file("pt", kLinear + legs).string()).programme.path_tolerance == 0.0);
+  // A top-level key: before the first table.
+  CHECK(read_programme_file(write_file("pt", "path_tolerance = 1e-5\n" + kLinear + legs).string())
+            .programme.path_tolerance == 1e-5);
+  CHECK(read_programme_file(write_file("pt", "path_tolerance = 0\n" + kLinear + legs).string())
+            .programme.path_tolerance == 0.0);
+  const std::string too_large = write_file("pt", "path_tolerance = 0.5\n" + kLinear + legs).string();
+  CHECK_THROWS_WITH(read_programme_file(too_large),
+                    Contains(too_large + ": path_tolerance = 0.5 is out of range (allowed: 0 (off) or 1e-12"));
+  const std::string word = write_file("pt", "path_tolerance = \"fine\"\n" + kLinear + legs).string();
+  CHECK_THROWS_WITH(read_programme_file(word), Contains("path_tolerance must be a number"));
+}
+
 TEST_CASE("a programme file's mistakes are named with the file, the leg and the key", "[programme]") {
   struct Case {
     std::string body, message;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <numbers>
 #include <sstream>
 
@@ -196,11 +197,20 @@ bool is_programme_file(const std::string& path) {
 ProgrammeFile read_programme_file(const std::string& path, std::span<const std::string> overrides) {
   const toml::table root = parse_toml_file(path);
   for (const auto& [key, value] : root) {
-    if (key.str() != "material" && key.str() != "initial" && key.str() != "leg")
-      throw ParameterError(path + ": " + std::string(key.str()) + " is not a known key or table (allowed: material, [initial], [[leg]])");
+    if (key.str() != "material" && key.str() != "initial" && key.str() != "leg" && key.str() != "path_tolerance")
+      throw ParameterError(path + ": " + std::string(key.str()) +
+                           " is not a known key or table (allowed: material, path_tolerance, [initial], [[leg]])");
   }
   std::string material_source;
   ProgrammeFile file{read_programme_material(root, path, overrides, material_source), material_source, {}, {}};
+  if (root.contains("path_tolerance")) {  // driver sub-steps (path_substeps.h); absent or 0: off
+    const std::optional<double> tolerance = root["path_tolerance"].value<double>();
+    const std::string allowed = "(allowed: 0 (off) or " + point_limits::path_tolerance().describe() + ")";
+    if (!tolerance) throw ParameterError(path + ": path_tolerance must be a number " + allowed);
+    if (*tolerance != 0.0 && !point_limits::path_tolerance().contains(*tolerance))
+      throw ParameterError(path + ": path_tolerance = " + format_number(*tolerance) + " is out of range " + allowed);
+    file.programme.path_tolerance = *tolerance;
+  }
   const toml::table* initial = root["initial"].as_table();
   if (!initial) throw ParameterError(path + ": no [initial] table");
   std::string initial_text;
