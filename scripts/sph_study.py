@@ -6,6 +6,7 @@ Run with Debian's /usr/bin/python3 (matplotlib, numpy).
     scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--jobs 2] [--reuse]
     scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
+    scripts/sph_study.py cut        [--out DIR] [--heights 3,4,...] [--spacings 2,1]
 
 Every run goes to the scene's end time or to rest (the scene's stop_at_rest). Runs go `--jobs` at a
 time with one thread each (results do not depend on the thread count; wall times are one core's).
@@ -19,6 +20,10 @@ cfl: the shipped scenes at one spacing for each CFL number, with the shipped and
   integrator; a run counts as unstable if it fails, if the wall guard acts, or if it is not at rest by
   its end time (2 s). Writes DIR/cfl.csv and DIR/cfl.md.
 integrator: explicit, substep and implicit for both scenes at one spacing: DIR/integrator.csv, .md.
+cut: the vertical cut (data/scenes/vertical-cut.toml) at each height and spacing, to 1 s without
+  stopping at rest (a marginal cut creeps below the rest speed); the face displacement W - min x at
+  the end against H in units of (c/gamma) tan(45 + phi/2), between the limit-analysis bounds 2 and
+  3.83. Writes DIR/cut.csv, DIR/cut.md and DIR/cut.png (face displacement against time per height).
 """
 import argparse
 import csv
@@ -204,11 +209,62 @@ def integrator(args):
                    "model | integrator | " + DEPOSIT_HEADER, lines)
 
 
+def cut(args):
+    out = pathlib.Path(args.out)
+    c, rho, g, phi, width = 200.0, 2000.0, 9.81, 35.0, 0.08  # data/scenes/vertical-cut.toml
+    unit = c / (rho * g) * math.tan(math.radians(45.0 + phi / 2.0))
+    heights = [float(h) / 100 for h in args.heights.split(",")]
+    spacings = [float(s) / 1000 for s in args.spacings.split(",")]
+    specs = [(f"cut-H{100 * h:g}cm-{1000 * s:g}mm", "vertical-cut",
+              [f"scene.column_height={h}", f"scene.particle_spacing={s}", "scene.stop_at_rest=false",
+               "output.frame_interval=0.02"] + args.set, {"H_m": h, "spacing_m": s})
+             for s in spacings for h in heights]
+    rows = run_all(specs, out, args.jobs, args.reuse)
+    for r in rows:
+        r["H_over_unit"] = r["H_m"] / unit
+        r["face_displacement_m"] = r["runout_m"] - width if r["status"] == "ok" else float("nan")
+    write_csv(rows, out / "cut.csv")
+    lines = [f"| {1000 * r['spacing_m']:g} | {100 * r['H_m']:g} | {r['H_over_unit']:.2f} | "
+             f"{1000 * r['face_displacement_m']:.2f} | {r['face_displacement_m'] / r['spacing_m']:.2f} | "
+             f"{100 * r.get('height_m', float('nan')):.2f} | {r.get('wall_seconds', float('nan')):.1f} |" for r in rows]
+    write_markdown(out / "cut.md", f"Vertical cut, c = {c:g} Pa, phi = {phi:g} deg: bounds 2 and 3.83 x "
+                   f"{100 * unit:.3f} cm = {200 * unit:.2f} and {383 * unit:.2f} cm (face displacement at 1 s)",
+                   "spacing (mm) | H (cm) | H / ((c/γ) tan(45°+φ/2)) | face displacement (mm) | in spacings | "
+                   "height (cm) | wall (s)", lines)
+    plot_cut(rows, out, unit)
+
+
+def plot_cut(rows, out, unit):
+    import h5py
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    spacings = sorted({r["spacing_m"] for r in rows}, reverse=True)
+    fig, axes = plt.subplots(1, len(spacings), figsize=(5.5 * len(spacings), 4.2), squeeze=False)
+    for ax, s in zip(axes[0], spacings):
+        for r in (r for r in rows if r["spacing_m"] == s and r["status"] == "ok"):
+            with h5py.File(out / "runs" / r["run"] / "frames.h5") as f:
+                frames = sorted(f.keys())
+                t = [f[k].attrs["time"] for k in frames]
+                face = [-f[k]["position"][:, 0].min() for k in frames]  # soil particles only
+            ax.plot(t, [1000 * v for v in face],
+                    label=f"H = {100 * r['H_m']:g} cm ({r['H_over_unit']:.2f})")
+        ax.set(xlabel="t (s)", ylabel="face displacement (mm)", yscale="symlog",
+               title=f"spacing {1000 * s:g} mm; H in units of (c/γ) tan(45°+φ/2) = {100 * unit:.2f} cm")
+        ax.axhline(1000 * s, color="gray", lw=0.8, ls=":")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle("Vertical cut in D-P soil (c = 200 Pa, φ = 35°): limit-analysis bounds 2 and 3.83; "
+                 "dotted: one spacing", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out / "cut.png", dpi=110)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="study", required=True)
     for name, default_out in (("resolution", "results/study-resolution"), ("cfl", "results/study-cfl"),
-                              ("integrator", "results/study-integrator")):
+                              ("integrator", "results/study-integrator"), ("cut", "results/study-cut")):
         p = sub.add_parser(name)
         p.add_argument("--out", default=default_out)
         p.add_argument("--jobs", type=int, default=2, help="runs at a time, one thread each")
@@ -216,6 +272,9 @@ def main():
         p.add_argument("--reuse", action="store_true", help="keep runs whose folder has a summary.json")
         if name == "resolution":
             p.add_argument("--spacings", default="4,2,1,0.5", help="particle spacings in mm")
+        elif name == "cut":
+            p.add_argument("--spacings", default="2,1", help="particle spacings in mm")
+            p.add_argument("--heights", default="3,4,5,5.4,5.6,5.8,6,8", help="cut heights in cm")
         else:
             p.add_argument("--spacing", type=float, default=2.0 if name == "cfl" else 1.0, help="mm")
         if name == "cfl":
@@ -224,7 +283,7 @@ def main():
     if not SOILSPH.exists():
         sys.exit(f"sph_study: {SOILSPH} not found: build first (bash scripts/setup.sh)")
     pathlib.Path(args.out).mkdir(parents=True, exist_ok=True)
-    {"resolution": resolution, "cfl": cfl, "integrator": integrator}[args.study](args)
+    {"resolution": resolution, "cfl": cfl, "integrator": integrator, "cut": cut}[args.study](args)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 // Whole runs at 2 mm: a column held by both walls stays at rest; the collapse runs to rest and its
-// deposit lies within bands around the scaling laws.
+// deposit lies within bands around the scaling laws; a vertical cut stands or fails as limit analysis
+// bounds its critical height.
 #include <catch2/catch.hpp>
 
 #include "helpers.h"
@@ -87,4 +88,33 @@ TEST_CASE("the D-P collapse runs to rest at 2 mm within the scaling-law bands", 
 }
 TEST_CASE("the MCC collapse runs to rest at 2 mm within the scaling-law bands", "[column][collapse]") {
   check_collapse("collapse-mcc");
+}
+
+namespace {
+/// How far the cut's face moved: the fixed wall is at x = W, the face started at x = 0.
+double face_displacement(const Particles& p) {
+  double xmin = 1.0;
+  for (std::size_t i = 0; i < p.soil_count; ++i) xmin = std::min(xmin, p.x[i]);
+  return -xmin;
+}
+}  // namespace
+
+// An unsupported vertical cut in c-phi soil (data/scenes/vertical-cut.toml, c = 200 Pa, phi = 35°):
+// limit analysis puts its critical height between 2 and 3.83 (c/gamma) tan(45° + phi/2), 3.92 and
+// 7.50 cm. Well below the lower bound (3 cm, 2 mm spacing) it stands: the face moves less than one
+// spacing in 0.2 s; well above the upper bound (8.8 cm, 4 mm spacing to keep the test short) it
+// fails: the face moves more than five spacings within 0.2 s.
+TEST_CASE("a vertical cut below the lower bound stands, one above the upper bound fails", "[column][cut]") {
+  const RunResult low = run_scene(test::shipped_scene(
+      "vertical-cut", {"scene.particle_spacing=0.002", "scene.end_time=0.2", "scene.stop_at_rest=false"}));
+  REQUIRE(all_finite(low.particles));
+  CHECK(face_displacement(low.particles) < 0.002);
+  CHECK(top_of_soil(low.particles) > 0.03 - 0.002);
+
+  const RunResult high = run_scene(test::shipped_scene("vertical-cut", {"scene.particle_spacing=0.004",
+                                                                        "scene.column_height=0.088",
+                                                                        "scene.end_time=0.2",
+                                                                        "scene.stop_at_rest=false"}));
+  REQUIRE(all_finite(high.particles));
+  CHECK(face_displacement(high.particles) > 5.0 * 0.004);
 }
