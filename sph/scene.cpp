@@ -84,12 +84,19 @@ void read_column(const TableReader& t, const toml::table& table, const toml::tab
   g.column_height = t.number("column_height", Range::positive(), "m");
   read_numerics_of_space(t, table, g, extra, Range::open(0.0, std::min(g.column_width, g.column_height) / 4));
   check_spacing_divides_column(t, g);
-  g.wall_withdrawal = t.choice("wall_withdrawal", {"instant", "none"}) == "instant" ? WallWithdrawal::Instant
-                                                                                    : WallWithdrawal::None;
+  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none", "lift"});
+  g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant
+                      : withdrawal == "none"  ? WallWithdrawal::None
+                                              : WallWithdrawal::Lift;
+  if (g.wall_withdrawal == WallWithdrawal::Lift)
+    g.lift_speed = t.number("lift_speed", Range::open(0.0, 1e3), "m/s");
+  else if (t.has("lift_speed"))
+    t.fail("lift_speed", "needs wall_withdrawal = \"lift\" (the gate's speed)");
   g.floor_length = t.number_or("floor_length", 6.0 * g.column_width, Range::open(g.column_width, 1e3), "m");
   if (t.has("lattice_origin")) t.fail("lattice_origin", "is fixed at [0, 0] by the column keys (column_width, ...)");
   g.layout = column_layout({g.column_width, g.column_height, g.particle_spacing, g.smoothing_length(), g.floor_length,
-                            g.boundary_layers, g.wall_withdrawal == WallWithdrawal::Instant},
+                            g.boundary_layers, g.wall_withdrawal == WallWithdrawal::Instant,
+                            g.wall_withdrawal == WallWithdrawal::Lift ? g.lift_speed : 0.0},
                            "");
   const toml::array added = read_boundaries(root, t.source(), g.layout.walls);
   if (!added.empty()) extra.insert("boundaries", added);

@@ -14,7 +14,9 @@
 
 namespace soilsph::sph {
 
-enum class WallWithdrawal { Instant, None };
+/// What happens to the column's left wall: withdrawn at t = 0, kept, or lifted as a gate at a finite
+/// speed (a moving wall: geometry/column.h).
+enum class WallWithdrawal { Instant, None, Lift };
 
 /// [scene]: geometry and duration. The soil and the walls are the layout (sph/geometry/layout.h,
 /// docs/scenes.md): from [[regions]] and [[boundaries]], or built from the column keys.
@@ -31,6 +33,7 @@ struct Geometry {
   WallWithdrawal wall_withdrawal;  ///< column only
   int boundary_layers;  ///< layers of ghost particles behind each wall
   double floor_length;  ///< column only: m, the floor extends from the fixed wall to x = W − floor_length
+  double lift_speed;    ///< column only, wall_withdrawal = "lift": the gate's upward speed (m/s)
   Layout layout;        ///< regions, walls, lattice origin
   double surface_level;  ///< the geostatic free surface: the top of the soil's outline along −g (m)
   double base_level;     ///< the lowest soil particle along −g (m)

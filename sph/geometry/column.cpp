@@ -28,6 +28,10 @@ Layout column_layout(const ColumnKeys& c, const std::string& material) {
   Wall removable{{{-half, top + half}, {-half, -half}}, WallKind::FreeSlip, 0.0, {}, "[scene] removable wall", {}};
   removable.strips = {{{0.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}, rows}};
   if (c.left_wall_withdrawn) removable.motion.removed_at = 0.0;
+  if (c.lift_speed > 0.0) {
+    const double clear = (top + dx + half) / c.lift_speed;  // its lower end from −Δp/2 to H + 2h + Δp
+    removable.motion = {clear, {0.0, c.lift_speed}, 0.0, clear};
+  }
   layout.walls = {floor, fixed, removable};
   return layout;
 }

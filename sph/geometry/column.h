@@ -15,11 +15,14 @@ struct ColumnKeys {
   double floor_length;     ///< m, the floor from the fixed wall leftwards
   int layers;              ///< ghost layers behind each wall
   bool left_wall_withdrawn;  ///< "instant": the left wall is never there
+  double lift_speed = 0.0;   ///< "lift": the left wall rises at this speed from t = 0 (m/s), 0: it stays
 };
 
 /// The soil box [−Δp/2, W + Δp/2] × [−Δp/2, H + Δp/2] (the particles' cells) on the lattice from
 /// (0, 0); the floor surface y = −Δp/2 from x = W − floor_length − Δp/2 to the fixed wall; the fixed
-/// wall x = W + Δp/2 and the removable wall x = −Δp/2 from the floor up to H + 2h + Δp/2.
+/// wall x = W + Δp/2 and the removable wall x = −Δp/2 from the floor up to H + 2h + Δp/2. A lifted
+/// wall is a gate: it moves up at lift_speed from t = 0 until its lower end has passed H + 2h + Δp
+/// (no soil particle reaches it any more), and is removed then.
 Layout column_layout(const ColumnKeys& column, const std::string& material);
 
 }  // namespace soilsph::sph

@@ -211,3 +211,22 @@ points = [[0.0, 0.0], [0.02, 0.0], [0.0, 0.02]]
   CHECK(build_particles(s).soil_count == 210);
   CHECK(build_particles(s).boundary_count() == 0);
 }
+
+TEST_CASE("wall_withdrawal = \"lift\" makes the left wall a gate rising at lift_speed until it clears the column",
+          "[geometry]") {
+  const Scene s = test::shipped_scene("gate-lift", {"scene.particle_spacing=0.004"});
+  const Wall& gate = s.geometry.layout.walls.at(2);
+  // The column's top + 2h + the spacing above the gate's lower end at -dx/2, at 1 m/s.
+  const double clear = (0.06 + 2.0 * 1.3 * 0.004 + 0.004 + 0.002) / 1.0;
+  CHECK(gate.motion.velocity == Vec2{0.0, 1.0});
+  CHECK(gate.motion.start == 0.0);
+  CHECK(gate.motion.end == Approx(clear));
+  CHECK(gate.motion.removed_at == Approx(clear));
+  // Its ghosts exist from t = 0 (unlike "instant"): 3 layers of the walls' 19 rows more.
+  const Scene instant = test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.004"});
+  CHECK(build_particles(s).boundary_count() == build_particles(instant).boundary_count() + 3 * 19);
+  CHECK_THROWS_WITH(test::shipped_scene("gate-lift", {"scene.wall_withdrawal=\"none\""}),
+                    Contains("[scene] lift_speed: needs wall_withdrawal = \"lift\""));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.wall_withdrawal=\"lift\""}),
+                    Contains("[scene] lift_speed: is missing"));
+}
