@@ -56,7 +56,7 @@ void check_spacing_divides_column(const TableReader& t, const Geometry& g) {
 }
 
 /// The [scene] keys every scene has: spacing, smoothing, duration, gravity, ghost layers.
-void read_numerics_of_space(const TableReader& t, const toml::table& table, Geometry& g, toml::table& extra,
+void read_space_and_time(const TableReader& t, const toml::table& table, Geometry& g, toml::table& extra,
                             Range spacing_range) {
   g.particle_spacing = t.number("particle_spacing", spacing_range, "m");
   g.smoothing_ratio = t.number("smoothing_ratio", Range::closed(1.0, 2.0));
@@ -82,7 +82,7 @@ void read_column(const TableReader& t, const toml::table& table, const toml::tab
   g.column = true;
   g.column_width = t.number("column_width", Range::positive(), "m");
   g.column_height = t.number("column_height", Range::positive(), "m");
-  read_numerics_of_space(t, table, g, extra, Range::open(0.0, std::min(g.column_width, g.column_height) / 4));
+  read_space_and_time(t, table, g, extra, Range::open(0.0, std::min(g.column_width, g.column_height) / 4));
   check_spacing_divides_column(t, g);
   const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none", "lift"});
   g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant
@@ -108,7 +108,7 @@ void read_column(const TableReader& t, const toml::table& table, const toml::tab
 void read_regions(const TableReader& t, const toml::table& table, const toml::table& root, Geometry& g,
                   toml::table& extra, const std::vector<std::string>& materials) {
   g.column = false;
-  read_numerics_of_space(t, table, g, extra, Range::open(0.0, 1e3));
+  read_space_and_time(t, table, g, extra, Range::open(0.0, 1e3));
   const double dx = g.particle_spacing;
   Vec2 origin{0.5 * dx, 0.5 * dx};  // cell edges on multiples of the spacing
   if (const toml::node* node = table.get("lattice_origin")) {

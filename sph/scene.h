@@ -2,7 +2,7 @@
 /// @file
 /// A collapse scene: geometry, initial state, material, numerics and output, read from a TOML file
 /// with `--set section.key=value` overrides, every value validated (constitutive/parameters.h).
-/// The keys and their meaning are listed in docs/sph.md.
+/// The keys and their meaning are listed in docs/scenes.md.
 #include <span>
 #include <string>
 #include <vector>

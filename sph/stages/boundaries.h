@@ -174,10 +174,12 @@ struct WallGuard {
       const Vec2 tangent = (1.0 / length) * along, n{-tangent.y, tangent.x};
       const bool moving = f.motion.moves() && t >= f.motion.start && t < f.motion.end;
       const Vec2 vw = moving ? f.motion.velocity : Vec2{};
+      const double c = dot(a, n), behind = -1e-12 * f.depth;  // d = x·n − a·n: one product pair per particle
       for (std::size_t i = 0; i < p.soil_count; ++i) {
-        const Vec2 r{p.x[i] - a.x, p.y[i] - a.y};
-        const double d = dot(r, n), s = dot(r, tangent);
-        if (!(d < -1e-12 * f.depth) || d < -f.depth || s < -f.depth || s > length + f.depth) continue;
+        const double d = p.x[i] * n.x + p.y[i] * n.y - c;
+        if (!(d < behind)) continue;  // in front of the wall: nearly every particle, every step
+        const double s = (p.x[i] - a.x) * tangent.x + (p.y[i] - a.y) * tangent.y;
+        if (d < -f.depth || s < -f.depth || s > length + f.depth) continue;
         p.x[i] -= d * n.x, p.y[i] -= d * n.y;
         const double vn = (p.vx[i] - vw.x) * n.x + (p.vy[i] - vw.y) * n.y;
         if (vn < 0.0) p.vx[i] -= vn * n.x, p.vy[i] -= vn * n.y;
