@@ -20,7 +20,9 @@
 ///    the wall sticks: as no slip (τ = σ̄_nt, s = 1). Beyond it the soil slides: the tangential
 ///    velocity is copied as on a free-slip wall (s = 0) and the ghost's shear stress is set so that
 ///    the wall carries exactly the limit, τ = ±μ σ'_n, against the soil's shear. A wall in tension
-///    (σ̄_nn ≥ 0) holds no shear.
+///    (σ̄_nn ≥ 0) holds no shear. Measured: it holds a block on a slope flatter than δ, but a sliding
+///    block feels about a quarter of μσ'_n (the switch reads the soil's shear stress, which a sliding
+///    soil barely builds; docs/scenes.md, Limits): deciding it from the slip velocity is the next step.
 /// The stick flag s is decided with the stress (loop 1 of the step) and used for the velocity (loop 3).
 /// For axis-aligned walls with v_w = 0 these are the column's former formulas, operation for
 /// operation: (σxx, σyy, −σxy) and (−v̄x, v̄y) on a vertical free-slip wall, σ̄ and −v̄ on the no-slip
