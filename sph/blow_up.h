@@ -21,6 +21,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sph/geometry/vec2.h"
 #include "sph/particles.h"
 
 namespace soilsph::sph {
@@ -70,14 +71,18 @@ inline std::string particle_blow_up(const Particles& p, std::size_t i, double so
 }
 
 /// The energy a run may never exceed in kinetic energy (J per metre of thickness): the soil's
-/// potential energy above `floor_y`, its elastic energy ½ σ:C:σ V and its kinetic energy now.
+/// potential energy |g| (height − datum) along −g above the lowest wall, its elastic energy
+/// ½ σ:C:σ V and its kinetic energy now.
 template <class Elastic>
-double energy_budget(const Particles& p, const Elastic& elasticity, double gravity, double floor_y) {
+double energy_budget(const Particles& p, const Elastic& elasticity, Vec2 gravity, double datum) {
+  const double g = norm(gravity);
+  const Vec2 down = g > 0.0 ? Vec2{gravity.x / g, gravity.y / g} : Vec2{0.0, -1.0};
   double e = 0.0;
   for (std::size_t i = 0; i < p.soil_count; ++i) {
     const double volume = p.mass[i] / p.density[i];
     const Mat3& sigma = p.state[i].stress;
-    e += p.mass[i] * (gravity * (p.y[i] - floor_y) + 0.5 * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i])) +
+    const double height = -(down.x * p.x[i] + down.y * p.y[i]);
+    e += p.mass[i] * (g * (height - datum) + 0.5 * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i])) +
          0.5 * volume * ddot(sigma, elasticity.at(mean_pressure(sigma)).compliance(sigma));
   }
   return e;

@@ -17,7 +17,9 @@ class Collapse {
       : scene_(scene), particles_(geostatic_particles(scene)), setup_(make_solver_setup(scene)) {}
   /// A collapse that continues from `particles` (a checkpoint's) rather than the initial column.
   Collapse(const Scene& scene, Particles particles)
-      : scene_(scene), particles_(std::move(particles)), setup_(make_solver_setup(scene)) {}
+      : scene_(scene), particles_(std::move(particles)), setup_(make_solver_setup(scene)) {
+    copy_wall_attributes(particles_, build_particles(scene));
+  }
 
   /// Runs the scene (solver.h, run) and returns its statistics.
   template <class OnFrame, class OnStep>

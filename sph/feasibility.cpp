@@ -2,19 +2,18 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
+#include "sph/geometry/polygon.h"
 #include "sph/initial_state.h"
 #include "sph/solver.h"
 
 namespace soilsph::sph {
 
 namespace {
-/// Lattice points along `length` at `spacing` (as initial_state.cpp builds them), without overflow.
-double points(double length, double spacing) { return std::round(length / spacing) + 1.0; }
-
 /// The material keys that set the P-wave speed, for a refusal caused by a tiny time step.
 std::string wave_speed_keys(const Material& material) {
   const Elasticity::Kind kind = std::visit([](const auto& m) { return m.elasticity().kind(); }, material);
@@ -27,10 +26,23 @@ std::string wave_speed_keys(const Material& material) {
 RunEstimate estimate_run(const Scene& scene) {
   const Geometry& g = scene.geometry;
   const double dx = g.particle_spacing, layers = g.boundary_layers;
-  const double soil = points(g.column_width, dx) * points(g.column_height, dx);
-  const double walls = g.wall_withdrawal == WallWithdrawal::None ? 2.0 : 1.0;
-  const double boundary = layers * (points(g.floor_length, dx) + layers) +
-                          walls * layers * points(g.column_height + 2.0 * g.smoothing_length(), dx);
+  // Counted from the layout without building it (a spacing of 1 µm must be refused, not allocated):
+  // a box's cells, a polygon's area in cells, each wall's ghost rows.
+  double soil = 0.0, boundary = 0.0;
+  for (const Region& r : g.layout.regions) {
+    const Vec2 lo = r.outline[0], hi = r.outline[2];
+    soil += r.shape == Region::Shape::Box ? std::round((hi.x - lo.x) / dx) * std::round((hi.y - lo.y) / dx)
+                                          : std::abs(signed_area(r.outline)) / (dx * dx);
+  }
+  for (const Wall& w : g.layout.walls) {
+    if (w.motion.removed_at <= 0.0) continue;
+    if (!w.strips.empty()) {
+      for (const GhostStrip& s : w.strips) boundary += layers * s.count;
+    } else {
+      for (std::size_t k = 0; k + 1 < w.points.size(); ++k)
+        boundary += layers * (std::max(1.0, std::round(norm(w.points[k + 1] - w.points[k]) / dx)) + layers);
+    }
+  }
   RunEstimate e;
   e.soil_particles = soil < 1e18 ? static_cast<std::size_t>(soil) : static_cast<std::size_t>(1e18);
   e.boundary_particles = boundary < 1e18 ? static_cast<std::size_t>(boundary) : static_cast<std::size_t>(1e18);
@@ -59,7 +71,7 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
         << " m/s of " << wave_speed_keys(scene.material) << ")";
     refuse(scene, msg.str());
   }
-  const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity * g.column_height);
+  const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity_magnitude() * g.column_height);
   if (c <= free_fall) {
     msg << "the soil is too soft to carry its own weight: its P-wave speed c = " << c
         << " m/s is below the free-fall speed sqrt(2 g H) = " << free_fall
@@ -78,7 +90,7 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
     msg << "the run would take about " << human_duration(e.seconds) << " (" << e.steps << " steps of "
         << e.time_step << " s to [scene] end_time = " << g.end_time << " s with "
         << static_cast<double>(e.soil_particles) << " soil and " << static_cast<double>(e.boundary_particles)
-        << " boundary particles from [scene] particle_spacing, column_width, column_height and floor_length; the step is [numerics] cfl = " << scene.numerics.cfl << " times h over the P-wave speed c = "
+        << " boundary particles from [scene] particle_spacing and the geometry; the step is [numerics] cfl = " << scene.numerics.cfl << " times h over the P-wave speed c = "
         << c << " m/s of " << wave_speed_keys(scene.material) << "), more than [scene] max_run_hours = "
         << scene.limits.max_run_hours << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
     refuse(scene, msg.str());

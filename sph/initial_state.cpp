@@ -1,38 +1,15 @@
 #include "sph/initial_state.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "sph/geometry/lattice.h"
 #include <sstream>
 
 namespace soilsph::sph {
 
 namespace {
-int lattice_count(double length, double spacing) {
-  return static_cast<int>(std::lround(length / spacing)) + 1;
-}
-
-struct Point {
-  double x, y;
-  BoundaryKind kind;
-};
-
-std::vector<Point> boundary_points(const Geometry& g) {
-  const double dx = g.particle_spacing;
-  const int layers = g.boundary_layers;
-  const double wall_top = g.column_height + 2.0 * g.smoothing_length();
-  const int wall_rows = lattice_count(wall_top, dx);
-  const int floor_columns = lattice_count(g.floor_length, dx) + layers;  // from W + layers·dx leftwards
-  std::vector<Point> points;
-  for (int k = 1; k <= layers; ++k)
-    for (int c = 0; c < floor_columns; ++c)
-      points.push_back({g.column_width + layers * dx - c * dx, -k * dx, BoundaryKind::NoSlipFloor});
-  for (int k = 1; k <= layers; ++k)
-    for (int r = 0; r < wall_rows; ++r) {
-      points.push_back({g.column_width + k * dx, r * dx, BoundaryKind::FreeSlipWall});
-      if (g.wall_withdrawal == WallWithdrawal::None)
-        points.push_back({-k * dx, r * dx, BoundaryKind::FreeSlipWall});
-    }
-  return points;
-}
 
 /// The model's initial hardening state (its hook: MCC's p_c, 0 for models without one).
 template <class Model>
@@ -49,12 +26,26 @@ bool inside_yield_surface(const Model& model, const State& s) {
   }
 }
 
-Mat3 geostatic_stress(const Geometry& g, double density, double k0, double y) {
-  const double vertical = -density * g.gravity * (g.column_height + 0.5 * g.particle_spacing - y);
+/// σ_v = −ρ|g| (surface − height), the weight of the soil above the particle's height along −g, and
+/// K0 σ_v across: σ = σ_v (K0 (I − ĝĝ) + ĝĝ) in the plane, σzz = K0 σ_v. With ĝ = (0, −1) these are
+/// σyy = σ_v, σxx = σzz = K0 σ_v, σxy = 0 exactly.
+Mat3 geostatic_stress(const Geometry& g, double density, double k0, double height) {
+  const double vertical = -density * g.gravity_magnitude() * (g.surface_level - height);
+  const Vec2 d = g.down();
   Mat3 sigma = Mat3::Zero();
-  sigma(0, 0) = sigma(2, 2) = k0 * vertical;
-  sigma(1, 1) = vertical;
+  sigma(0, 0) = vertical * (k0 * (1.0 - d.x * d.x) + d.x * d.x);
+  sigma(1, 1) = vertical * (k0 * (1.0 - d.y * d.y) + d.y * d.y);
+  sigma(0, 1) = sigma(1, 0) = vertical * (k0 * (0.0 - d.x * d.y) + d.x * d.y) + 0.0;  // + 0: no −0 shear
+  sigma(2, 2) = k0 * vertical;
   return sigma;
+}
+
+/// The lowest point of the soil's outline along −g: layer ids count from it.
+double lowest_outline_height(const Geometry& g) {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const Region& r : g.layout.regions)
+    for (const Vec2& v : r.outline) lowest = std::min(lowest, g.height(v));
+  return lowest;
 }
 }  // namespace
 
@@ -62,27 +53,42 @@ Particles build_particles(const Scene& scene) {
   const Geometry& g = scene.geometry;
   const double dx = g.particle_spacing;
   const double rho = density(scene.material);
-  const int nx = lattice_count(g.column_width, dx), ny = lattice_count(g.column_height, dx);
-  const std::vector<Point> boundary = boundary_points(g);
+  const std::vector<SoilNode> soil = soil_nodes(g.layout, dx, scene.source);
+  const std::vector<GhostPoint> ghosts = ghost_points(g.layout, dx, g.boundary_layers);
+  const double lowest = lowest_outline_height(g);
 
   Particles p;
-  p.resize(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), boundary.size());
-  std::size_t i = 0;
-  for (int r = 0; r < ny; ++r)
-    for (int c = 0; c < nx; ++c, ++i) {
-      p.x[i] = c * dx;
-      p.y[i] = r * dx;
-      p.layer[i] = static_cast<int>((r * dx + 0.5 * dx) / scene.output.layer_thickness);
-    }
-  for (const Point& b : boundary) {
-    p.x[i] = b.x;
-    p.y[i] = b.y;
-    p.boundary_kind[i - p.soil_count] = b.kind;
-    ++i;
+  p.resize(soil.size(), ghosts.size());
+  for (std::size_t i = 0; i < soil.size(); ++i) {
+    p.x[i] = soil[i].position.x;
+    p.y[i] = soil[i].position.y;
+    p.layer[i] = static_cast<int>((g.height(soil[i].position) - lowest) / scene.output.layer_thickness);
+  }
+  for (std::size_t k = 0; k < ghosts.size(); ++k) {
+    const GhostPoint& b = ghosts[k];
+    const Wall& wall = g.layout.walls[static_cast<std::size_t>(b.wall)];
+    const std::size_t i = soil.size() + k;
+    p.x[i] = b.position.x;
+    p.y[i] = b.position.y;
+    p.boundary_kind[k] = wall.kind;
+    p.wall_nx[k] = b.inward.x, p.wall_ny[k] = b.inward.y;
+    p.wall_friction[k] = wall_friction_coefficient(wall);
+    p.wall_stick[k] = wall.kind == WallKind::NoSlip ? 1.0 : 0.0;
+    p.wall_id[k] = b.wall;
   }
   std::fill(p.density.begin(), p.density.end(), rho);
   std::fill(p.mass.begin(), p.mass.end(), rho * dx * dx);
+  wall_motions(scene).set_velocities(p, 0.0);
   return p;
+}
+
+void copy_wall_attributes(Particles& to, const Particles& from) {
+  if (to.soil_count != from.soil_count || to.boundary_count() != from.boundary_count())
+    throw ParameterError("the checkpoint's particles (" + std::to_string(to.soil_count) + " soil, " +
+                         std::to_string(to.boundary_count()) + " boundary) are not the scene's (" +
+                         std::to_string(from.soil_count) + ", " + std::to_string(from.boundary_count()) + ")");
+  to.wall_nx = from.wall_nx, to.wall_ny = from.wall_ny, to.wall_friction = from.wall_friction;
+  to.wall_stick = from.wall_stick, to.wall_id = from.wall_id;
 }
 
 void set_geostatic_state(Particles& p, const Scene& scene) {
@@ -92,11 +98,12 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
         for (std::size_t i = 0; i < p.soil_count; ++i) {
           State& s = p.state[i];
           s = State{};
-          s.stress = geostatic_stress(scene.geometry, rho, scene.initial.lateral_stress_ratio, p.y[i]);
+          s.stress = geostatic_stress(scene.geometry, rho, scene.initial.lateral_stress_ratio,
+                                      scene.geometry.height({p.x[i], p.y[i]}));
           s.pc = initial_preconsolidation(model, s.stress, scene.initial);
           if (!inside_yield_surface(model, s)) {
             std::ostringstream msg;
-            msg << scene.source << ": the geostatic stress at y = " << p.y[i]
+            msg << scene.source << ": the geostatic stress at (" << p.x[i] << ", " << p.y[i] << ") m"
                 << " m lies outside the yield surface; [initial] lateral_stress_ratio = "
                 << scene.initial.lateral_stress_ratio << " is not admissible for this material";
             throw ParameterError(msg.str());
@@ -112,7 +119,7 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
       [&](const auto& model) {
         const auto admissible = [&](double k0) {
           State s;
-          s.stress = geostatic_stress(geometry, model.params().density, k0, 0.0);
+          s.stress = geostatic_stress(geometry, model.params().density, k0, geometry.base_level);
           s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0});
           return inside_yield_surface(model, s);
         };
@@ -126,16 +133,31 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
 
 double largest_initial_pressure(const Scene& scene) {
   const Mat3 base =
-      geostatic_stress(scene.geometry, density(scene.material), scene.initial.lateral_stress_ratio, 0.0);
+      geostatic_stress(scene.geometry, density(scene.material), scene.initial.lateral_stress_ratio,
+                       scene.geometry.base_level);
   return mean_pressure(base);
 }
 
 WallGuard wall_guard(const Scene& scene) {
   const Geometry& g = scene.geometry;
-  const double half = 0.5 * g.particle_spacing;
-  WallGuard guard{-half, g.column_width + half, std::nullopt};
-  if (g.wall_withdrawal == WallWithdrawal::None) guard.left_wall_x = -half;
+  // As deep as the ghost layers, and as far past a piece's ends (its corner block).
+  const double depth = (g.boundary_layers + 0.5) * g.particle_spacing;
+  WallGuard guard;
+  for (const Wall& w : g.layout.walls) {
+    if (w.motion.removed_at <= 0.0) continue;
+    for (std::size_t k = 0; k + 1 < w.points.size(); ++k) guard.faces.push_back({w.points[k], w.points[k + 1], depth, w.motion});
+  }
   return guard;
+}
+
+WallMotions wall_motions(const Scene& scene) {
+  WallMotions m;
+  for (const Wall& w : scene.geometry.layout.walls) {
+    m.motions.push_back(w.motion);
+    m.any = m.any || w.motion.moves() ||
+            (w.motion.removed_at > 0.0 && w.motion.removed_at < std::numeric_limits<double>::infinity());
+  }
+  return m;
 }
 
 }  // namespace soilsph::sph

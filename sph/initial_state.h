@@ -8,18 +8,22 @@
 
 namespace soilsph::sph {
 
-/// The soil as an nx × ny lattice at spacing Δp from (0, 0) to (W, H) (41 × 61 at 1 mm for the paper's
-/// 4 cm × 6 cm), mass ρ Δp² per unit thickness, at rest, layer ids from the bottom; then the boundary:
-/// `boundary_layers` rows below the floor (y = −kΔp) from the far end of the floor to under the fixed
-/// wall, as many columns right of the fixed wall (x = W + kΔp) and, with wall_withdrawal = "none",
-/// left of the removable wall (x = −kΔp), up to H + 2h. "instant" removes that wall at t = 0, i.e.
-/// the run starts without it while the stress is the one it held.
+/// The soil on the lattice inside the layout's regions (geometry/lattice.h; the column: an nx × ny
+/// lattice from (0, 0) to (W, H), 41 × 61 at 1 mm for the paper's 4 cm × 6 cm), mass ρ Δp² per unit
+/// thickness, at rest, layer ids from the bottom along −g; then the ghost rows of every wall present
+/// at t = 0 (a wall removed at 0, the column's "instant" withdrawal, is never built: the run starts
+/// without it while the stress is the one it held), each with its wall's normal, friction and velocity.
 Particles build_particles(const Scene& scene);
 
-/// Geostatic stress for every soil particle, tension-positive:
-///   σyy = −ρ g (H + Δp/2 − y),   σxx = σzz = K0 σyy,   σxy = 0,
-/// the weight of the soil above the top of the particle's own cell (the free surface lies half a
-/// spacing above the top row). For MCC, p_c = max(OCR · p_c,yield, p_c,floor) with
+/// Copies the ghosts' wall normals, friction and ids, which a checkpoint does not hold, from `from`
+/// (the scene's particles as built) to `to` (a checkpoint's); throws if the counts differ.
+void copy_wall_attributes(Particles& to, const Particles& from);
+
+/// Geostatic stress for every soil particle, tension-positive, for a flat free surface at the top of
+/// the soil's outline along −g (the column: H + Δp/2, half a spacing above the top row):
+///   σ_v = −ρ |g| (surface − height),   σ_h = σzz = K0 σ_v,   no shear in the gravity frame,
+/// with gravity along −y σyy = σ_v, σxx = σzz = K0 σ_v, σxy = 0. (A surface that is not flat, e.g. a
+/// slope, needs the depth below the local surface: issue #12 item 3.) For MCC, p_c = max(OCR · p_c,yield, p_c,floor) with
 /// p_c,yield = p + q²/(M² p), the p_c that puts (p, q) on the surface (eq 24): at the free surface
 /// p → 0 and p_c,yield → 0, which would leave the top without any strength, so the floor
 /// ([initial] preconsolidation_floor) bounds it. Throws ParameterError if a particle's initial
@@ -37,7 +41,10 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
 /// The largest initial mean pressure p of the soil (Pa), for the elastic wave speed.
 double largest_initial_pressure(const Scene& scene);
 
-/// The wall surfaces, half a spacing in front of the first boundary layer.
+/// The wall guard of every wall surface present at t = 0.
 WallGuard wall_guard(const Scene& scene);
+
+/// The motions of the layout's walls, by wall index.
+WallMotions wall_motions(const Scene& scene);
 
 }  // namespace soilsph::sph

@@ -7,14 +7,13 @@
 #include <vector>
 
 #include "constitutive/state.h"
+#include "sph/geometry/layout.h"
 
 namespace soilsph::sph {
 
-/// What a boundary particle represents; it decides how it mirrors the soil (see stages/boundaries.h).
-enum class BoundaryKind : std::uint8_t {
-  FreeSlipWall,  ///< a vertical wall: normal velocity and shear stress mirrored, tangential copied
-  NoSlipFloor,   ///< the floor: velocity mirrored (zero at the wall), stress copied
-};
+/// The kind of wall a boundary particle belongs to (geometry/layout.h); recorded for checkpoints and
+/// output. The mirroring reads the ghost's friction coefficient instead (stages/boundaries.h).
+using BoundaryKind = WallKind;
 
 struct Particles {
   std::size_t soil_count = 0;  ///< soil particles are the first soil_count entries
@@ -35,8 +34,14 @@ struct Particles {
   std::vector<State> state;                ///< full 3×3 stress and hardening state
   std::vector<int> layer;                  ///< horizontal layer id from the bottom (for pictures)
 
-  // Boundary only, indexed by (i − soil_count).
+  // Boundary only, indexed by (i − soil_count): the wall each ghost mirrors across, chosen once
+  // when the ghosts are built so that the step runs one formula for every kind (stages/boundaries.h).
   std::vector<BoundaryKind> boundary_kind;
+  std::vector<double> wall_nx, wall_ny;  ///< unit wall normal towards the soil
+  std::vector<double> wall_vx, wall_vy;  ///< the wall's velocity now (m/s)
+  std::vector<double> wall_friction;     ///< μ = tan δ: 0 free slip, +∞ no slip
+  std::vector<double> wall_stick;        ///< 1 if the wall holds the soil this step, 0 if it slides (set with the stress)
+  std::vector<int> wall_id;              ///< index of its wall in the layout
 
   std::size_t size() const { return x.size(); }
   std::size_t boundary_count() const { return size() - soil_count; }
@@ -56,8 +61,10 @@ struct Particles {
 
   /// Bytes held by the arrays.
   std::size_t bytes() const {
-    std::size_t b =
-        state.capacity() * sizeof(State) + layer.capacity() * sizeof(int) + boundary_kind.capacity();
+    std::size_t b = state.capacity() * sizeof(State) + layer.capacity() * sizeof(int) + boundary_kind.capacity() +
+                    wall_id.capacity() * sizeof(int);
+    for (const auto* a : {&wall_nx, &wall_ny, &wall_vx, &wall_vy, &wall_friction, &wall_stick})
+      b += a->capacity() * sizeof(double);
     for_each_array([&](const char*, const std::vector<double>& a) { b += a.capacity() * sizeof(double); });
     return b;
   }
@@ -69,7 +76,9 @@ struct Particles {
     for_each_array([&](const char*, std::vector<double>& a) { a.assign(k++ < kParticleArrays ? soil + boundary : soil, 0.0); });
     state.assign(soil, State{});
     layer.assign(soil, 0);
-    boundary_kind.assign(boundary, BoundaryKind::NoSlipFloor);
+    boundary_kind.assign(boundary, BoundaryKind::NoSlip);
+    for (auto* a : {&wall_nx, &wall_ny, &wall_vx, &wall_vy, &wall_friction, &wall_stick}) a->assign(boundary, 0.0);
+    wall_id.assign(boundary, 0);
   }
 
  private:

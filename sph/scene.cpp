@@ -2,11 +2,15 @@
 
 #include "constitutive/material_limits.h"
 
+#include "sph/geometry/column.h"
+#include "sph/geometry/read_layout.h"
 #include "sph/initial_state.h"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace soilsph::sph {
@@ -51,35 +55,95 @@ void check_spacing_divides_column(const TableReader& t, const Geometry& g) {
   t.fail("particle_spacing", msg.str());
 }
 
-Geometry read_geometry(const TableReader& t) {
-  Geometry g{};
-  g.column_width = t.number("column_width", Range::positive(), "m");
-  g.column_height = t.number("column_height", Range::positive(), "m");
-  g.particle_spacing =
-      t.number("particle_spacing", Range::open(0.0, std::min(g.column_width, g.column_height) / 4), "m");
-  check_spacing_divides_column(t, g);
+/// The [scene] keys every scene has: spacing, smoothing, duration, gravity, ghost layers.
+void read_space_and_time(const TableReader& t, const toml::table& table, Geometry& g, toml::table& extra,
+                            Range spacing_range) {
+  g.particle_spacing = t.number("particle_spacing", spacing_range, "m");
   g.smoothing_ratio = t.number("smoothing_ratio", Range::closed(1.0, 2.0));
   g.end_time = t.number("end_time", Range::positive(), "s");
-  // Up to 1000 g: a geotechnical centrifuge reaches a few hundred g.
-  g.gravity = t.number("gravity", Range::closed(0.0, 1e4), "m/s^2");
-  g.wall_withdrawal = t.choice("wall_withdrawal", {"instant", "none"}) == "instant" ? WallWithdrawal::Instant
-                                                                                    : WallWithdrawal::None;
+  // Up to 1000 g: a geotechnical centrifuge reaches a few hundred g. A number g is (0, −g).
+  if (const toml::node* node = table.get("gravity"); node && node->is_array()) {
+    t.accept({"gravity"});
+    g.gravity = read_vector(*node, t.source() + ": [scene] gravity", "m/s^2");
+    if (g.gravity_magnitude() > 1e4)
+      t.fail("gravity", "has magnitude " + format_number(g.gravity_magnitude()) + " (allowed: <= 10000 m/s^2)");
+    extra.insert("gravity", toml::array{g.gravity.x, g.gravity.y});
+  } else {
+    g.gravity = {0.0, -t.number("gravity", Range::closed(0.0, 1e4), "m/s^2")};
+  }
   // Enough layers to fill the support 2h of a soil particle sitting on the wall.
   const auto full_support = static_cast<long long>(std::ceil(2.0 * g.smoothing_ratio - 1e-9));
   g.boundary_layers = static_cast<int>(t.integer_or("boundary_layers", full_support, full_support, 10));
+}
+
+/// The column shorthand (geometry/column.h), plus any [[boundaries]] the scene adds (e.g. a gate).
+void read_column(const TableReader& t, const toml::table& table, const toml::table& root, Geometry& g,
+                 toml::table& extra) {
+  g.column = true;
+  g.column_width = t.number("column_width", Range::positive(), "m");
+  g.column_height = t.number("column_height", Range::positive(), "m");
+  read_space_and_time(t, table, g, extra, Range::open(0.0, std::min(g.column_width, g.column_height) / 4));
+  check_spacing_divides_column(t, g);
+  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none", "lift"});
+  g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant
+                      : withdrawal == "none"  ? WallWithdrawal::None
+                                              : WallWithdrawal::Lift;
+  if (g.wall_withdrawal == WallWithdrawal::Lift)
+    g.lift_speed = t.number("lift_speed", Range::open(0.0, 1e3), "m/s");
+  else if (t.has("lift_speed"))
+    t.fail("lift_speed", "needs wall_withdrawal = \"lift\" (the gate's speed)");
   g.floor_length = t.number_or("floor_length", 6.0 * g.column_width, Range::open(g.column_width, 1e3), "m");
-  return g;
+  if (t.has("lattice_origin")) t.fail("lattice_origin", "is fixed at [0, 0] by the column keys (column_width, ...)");
+  g.layout = column_layout({g.column_width, g.column_height, g.particle_spacing, g.smoothing_length(), g.floor_length,
+                            g.boundary_layers, g.wall_withdrawal == WallWithdrawal::Instant,
+                            g.wall_withdrawal == WallWithdrawal::Lift ? g.lift_speed : 0.0},
+                           "");
+  const toml::array added = read_boundaries(root, t.source(), g.layout.walls);
+  if (!added.empty()) extra.insert("boundaries", added);
+  g.surface_level = g.column_height + 0.5 * g.particle_spacing;  // the box's top, as the geostatic stress always had it
+  g.base_level = 0.0;
+}
+
+/// [[regions]] and [[boundaries]] (geometry/read_layout.h).
+void read_regions(const TableReader& t, const toml::table& table, const toml::table& root, Geometry& g,
+                  toml::table& extra, const std::vector<std::string>& materials) {
+  g.column = false;
+  read_space_and_time(t, table, g, extra, Range::open(0.0, 1e3));
+  const double dx = g.particle_spacing;
+  Vec2 origin{0.5 * dx, 0.5 * dx};  // cell edges on multiples of the spacing
+  if (const toml::node* node = table.get("lattice_origin")) {
+    t.accept({"lattice_origin"});
+    origin = read_vector(*node, t.source() + ": [scene] lattice_origin", "m");
+  }
+  extra.insert("lattice_origin", toml::array{origin.x, origin.y});
+  ReadLayout read = read_layout(root, t.source(), dx, origin, materials);
+  g.layout = std::move(read.layout);
+  extra.insert("regions", std::move(read.regions));
+  if (!read.boundaries.empty()) extra.insert("boundaries", std::move(read.boundaries));
+  g.wall_withdrawal = WallWithdrawal::None;
+  g.floor_length = 0.0;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double top = -inf, bottom = inf, right = -inf;
+  for (const Region& r : g.layout.regions)
+    for (const Vec2& v : r.outline) {
+      top = std::max(top, g.height(v)), bottom = std::min(bottom, g.height(v));
+      right = std::max(right, v.x);
+    }
+  g.surface_level = top;
+  g.base_level = bottom + 0.5 * dx;
+  g.column_width = right - 0.5 * dx;
+  g.column_height = std::max(top - 0.5 * dx - g.base_level, dx);
 }
 
 /// Defaults scale with the column (sph/rest.h): 1 % of √(2gH) and √(H/g); without gravity the
 /// run has no such scale and does not stop at rest unless asked to (then 1 cm/s and 0.1 s).
 RestCriterion read_rest(const TableReader& t, const Geometry& g) {
-  const bool falls = g.gravity > 0.0;
+  const bool falls = g.gravity_magnitude() > 0.0;
   RestCriterion r;
   r.enabled = t.boolean_or("stop_at_rest", falls);
-  r.speed = t.number_or("rest_speed", falls ? 0.01 * std::sqrt(2.0 * g.gravity * g.column_height) : 0.01,
+  r.speed = t.number_or("rest_speed", falls ? 0.01 * std::sqrt(2.0 * g.gravity_magnitude() * g.column_height) : 0.01,
                         Range::positive(), "m/s");
-  r.duration = t.number_or("rest_duration", falls ? std::sqrt(g.column_height / g.gravity) : 0.1,
+  r.duration = t.number_or("rest_duration", falls ? std::sqrt(g.column_height / g.gravity_magnitude()) : 0.1,
                            Range::positive(), "s");
   r.fraction = t.number_or("rest_fraction", 0.99, Range::open_closed(0.5, 1.0));
   return r;
@@ -132,26 +196,85 @@ OutputSettings read_output(const TableReader& t, double end_time) {
 
 }  // namespace
 
+namespace {
+/// The named materials of [materials.NAME] (or the one [material], named ""), and the one the
+/// regions use: several in one scene is the next step of issue #12, refused until then.
+struct Materials {
+  std::vector<std::string> names;
+  std::vector<std::unique_ptr<TableReader>> tables;
+};
+
+Materials material_tables(const toml::table& root, const std::string& source) {
+  Materials m;
+  const bool one = root.get("material") != nullptr, named = root.get("materials") != nullptr;
+  if (one == named)
+    throw ParameterError(source + (one ? ": give either [material] or [materials.NAME] tables, not both"
+                                       : ": no [material] table (or [materials.NAME] tables)"));
+  if (one) {
+    m.names.push_back("");
+    m.tables.push_back(std::make_unique<TableReader>(section(root, source, "material"), source, "material"));
+    return m;
+  }
+  const toml::table& all = section(root, source, "materials");
+  if (all.empty()) throw ParameterError(source + ": [materials] holds no [materials.NAME] table");
+  for (const auto& [key, node] : all) {
+    const std::string name(key.str());
+    if (!node.is_table()) throw ParameterError(source + ": [materials] " + name + " must be a table ([materials." + name + "])");
+    m.names.push_back(name);
+    m.tables.push_back(std::make_unique<TableReader>(*node.as_table(), source, "materials." + name));
+  }
+  return m;
+}
+
+/// The one material the regions use.
+std::size_t material_in_use(const Geometry& g, const Materials& m, const std::string& source) {
+  const std::string& first = g.layout.regions.front().material;
+  for (const Region& r : g.layout.regions)
+    if (r.material != first)
+      throw ParameterError(source + ": " + r.name + " material = \"" + r.material + "\" is a second material (" +
+                           g.layout.regions.front().name + " has \"" + first +
+                           "\"); one scene holds one material until several are supported (issue #12)");
+  return static_cast<std::size_t>(std::find(m.names.begin(), m.names.end(), first) - m.names.begin());
+}
+}  // namespace
+
 Scene read_scene(const toml::table& root, const std::string& source) {
+  static constexpr std::string_view kTables[] = {"scene",   "initial", "material", "materials",
+                                                 "regions", "boundaries", "numerics", "output"};
   for (const auto& [key, node] : root) {
     const std::string_view name = key.str();
-    if (name != "scene" && name != "initial" && name != "material" && name != "numerics" && name != "output")
+    if (std::find(std::begin(kTables), std::end(kTables), name) == std::end(kTables))
       throw ParameterError(source + ": [" + std::string(name) +
-                           "] is not a known table (allowed: scene, initial, material, numerics, output)");
+                           "] is not a known table (allowed: scene, initial, material, materials, regions, "
+                           "boundaries, numerics, output)");
   }
   if (!root.get("scene")) throw ParameterError(source + ": no [scene] table");
-  if (!root.get("material")) throw ParameterError(source + ": no [material] table");
+  const Materials materials = material_tables(root, source);
 
-  const TableReader scene(section(root, source, "scene"), source, "scene");
-  const TableReader material_table(section(root, source, "material"), source, "material");
+  const toml::table& scene_table = section(root, source, "scene");
+  const TableReader scene(scene_table, source, "scene");
   const TableReader initial(section(root, source, "initial"), source, "initial");
   const TableReader numerics(section(root, source, "numerics"), source, "numerics");
   const TableReader output(section(root, source, "output"), source, "output");
 
-  const Geometry geometry = read_geometry(scene);
+  Geometry geometry{};
+  toml::table extra;  // what [scene] and the layout add to the scene as run beyond TableReader's keys
+  const bool column_keys = scene.has("column_width") || scene.has("column_height");
+  if (root.get("regions") && column_keys)
+    scene.fail(scene.has("column_width") ? "column_width" : "column_height",
+               "and [[regions]] exclude each other: the column keys are a shorthand for one box region");
+  if (root.get("regions")) {
+    read_regions(scene, scene_table, root, geometry, extra, materials.names);
+  } else {
+    if (materials.names.size() != 1 || !materials.names.front().empty())
+      throw ParameterError(source + ": [materials.NAME] tables need [[regions]] that name them; the column keys use [material]");
+    read_column(scene, scene_table, root, geometry, extra);
+  }
+  const std::size_t used = material_in_use(geometry, materials, source);
   const RestCriterion rest = read_rest(scene, geometry);
-  Material material = read_material(material_table);
-  const double base_stress = density(material) * geometry.gravity * (geometry.column_height + geometry.particle_spacing);
+  Material material = read_material(*materials.tables[used]);
+  const double base_stress =
+      density(material) * geometry.gravity_magnitude() * (geometry.column_height + geometry.particle_spacing);
   if (!std::isfinite(base_stress))
     throw ParameterError(source + ": the weight of the column overflows: [material] density x [scene] gravity x "
                          "[scene] column_height is not a finite stress (Pa)");
@@ -166,8 +289,23 @@ Scene read_scene(const toml::table& root, const std::string& source) {
                {scene.number_or("max_run_hours", 24.0, Range::positive(), "h")},
                {}};
   for (const TableReader* t : {&scene, &initial, &numerics, &output}) t->reject_unknown_keys();
-  for (const TableReader* t : {&scene, &initial, &material_table, &numerics, &output})
-    result.resolved.insert(t->table_name(), t->resolved());
+  // Every named material is read (validated) even if unused, so a typo in one is never silent.
+  for (std::size_t k = 0; k < materials.tables.size(); ++k)
+    if (k != used) (void)read_material(*materials.tables[k]);
+  toml::table scene_resolved = scene.resolved();
+  for (const char* key : {"gravity", "lattice_origin"})
+    if (const toml::node* v = extra.get(key)) scene_resolved.insert_or_assign(key, *v);
+  result.resolved.insert("scene", std::move(scene_resolved));
+  for (const TableReader* t : {&initial, &numerics, &output}) result.resolved.insert(t->table_name(), t->resolved());
+  if (materials.names.front().empty()) {
+    result.resolved.insert("material", materials.tables.front()->resolved());
+  } else {
+    toml::table named;
+    for (std::size_t k = 0; k < materials.tables.size(); ++k) named.insert(materials.names[k], materials.tables[k]->resolved());
+    result.resolved.insert("materials", std::move(named));
+  }
+  for (const char* key : {"regions", "boundaries"})
+    if (const toml::node* v = extra.get(key)) result.resolved.insert(key, *v);
   return result;
 }
 

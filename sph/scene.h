@@ -2,32 +2,54 @@
 /// @file
 /// A collapse scene: geometry, initial state, material, numerics and output, read from a TOML file
 /// with `--set section.key=value` overrides, every value validated (constitutive/parameters.h).
-/// The keys and their meaning are listed in docs/sph.md.
+/// The keys and their meaning are listed in docs/scenes.md.
 #include <span>
 #include <string>
 #include <vector>
 
 #include "constitutive/material.h"
+#include "sph/geometry/layout.h"
 #include "sph/output/frame.h"
 #include "sph/rest.h"
 
 namespace soilsph::sph {
 
-enum class WallWithdrawal { Instant, None };
+/// What happens to the column's left wall: withdrawn at t = 0, kept, or lifted as a gate at a finite
+/// speed (a moving wall: geometry/column.h).
+enum class WallWithdrawal { Instant, None, Lift };
 
-/// [scene]: geometry and duration.
+/// [scene]: geometry and duration. The soil and the walls are the layout (sph/geometry/layout.h,
+/// docs/scenes.md): from [[regions]] and [[boundaries]], or built from the column keys.
 struct Geometry {
-  double column_width;      ///< W (m): the soil spans 0 ≤ x ≤ W
-  double column_height;     ///< H (m): the soil spans 0 ≤ y ≤ H
+  bool column;              ///< the layout is the column shorthand's (column_width, ... given)
+  double column_width;      ///< column: W (m), the soil spans 0 ≤ x ≤ W; regions: the soil's largest x
+                            ///< (the deposit measures' fixed-wall reference, analysis/deposit.h)
+  double column_height;     ///< column: H (m), the soil spans 0 ≤ y ≤ H; regions: the soil's height
+                            ///< along −g between its lowest and highest particles
   double particle_spacing;  ///< Δp (m), lattice spacing of soil and boundary particles
   double smoothing_ratio;   ///< h/Δp
   double end_time;          ///< s
-  double gravity;           ///< m/s², acting along −y
-  WallWithdrawal wall_withdrawal;
+  Vec2 gravity;             ///< m/s²; the scalar key g means (0, −g)
+  WallWithdrawal wall_withdrawal;  ///< column only
   int boundary_layers;  ///< layers of ghost particles behind each wall
-  double floor_length;  ///< m, the floor extends from the fixed wall to x = W − floor_length
+  double floor_length;  ///< column only: m, the floor extends from the fixed wall to x = W − floor_length
+  double lift_speed;    ///< column only, wall_withdrawal = "lift": the gate's upward speed (m/s)
+  Layout layout;        ///< regions, walls, lattice origin
+  double surface_level;  ///< the geostatic free surface: the top of the soil's outline along −g (m)
+  double base_level;     ///< the lowest soil particle along −g (m)
 
   double smoothing_length() const { return smoothing_ratio * particle_spacing; }
+  double gravity_magnitude() const { return norm(gravity); }
+  /// Unit vector along gravity; (0, −1) without gravity (heights and layers still need an "up").
+  Vec2 down() const {
+    const double g = gravity_magnitude();
+    return g > 0.0 ? Vec2{gravity.x / g, gravity.y / g} : Vec2{0.0, -1.0};
+  }
+  /// Height of a point along −g (m): y when gravity is along −y.
+  double height(Vec2 p) const {
+    const Vec2 d = down();
+    return -(d.x * p.x + d.y * p.y);
+  }
 };
 
 /// [initial]: the geostatic state before the wall moves.

@@ -2,16 +2,49 @@
 
 #include "sph/initial_state.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace soilsph::sph {
 
 namespace {
-/// The box the soil stays in (blow_up.h): the floor from its far end to the fixed wall and its
-/// ghost layers, and twice the column's height, each widened by the kernel support 2h.
+/// The box the soil stays in (blow_up.h): around the walls and their ghost layers (where they move
+/// to included) and the soil, up to twice the soil's height above its base, widened by the kernel
+/// support 2h. For the column: the floor from its far end to the fixed wall's ghost layers, and
+/// twice the column's height.
 Domain domain(const Scene& scene) {
   const Geometry& g = scene.geometry;
   const double behind = g.boundary_layers * g.particle_spacing, support = 2.0 * g.smoothing_length();
-  return {g.column_width - g.floor_length - behind - support, g.column_width + behind + support,
-          -behind - support, 2.0 * g.column_height + support};
+  Domain d{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+           std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  const auto include = [&](Vec2 v, double margin) {
+    d.x_min = std::min(d.x_min, v.x - margin), d.x_max = std::max(d.x_max, v.x + margin);
+    d.y_min = std::min(d.y_min, v.y - margin), d.y_max = std::max(d.y_max, v.y + margin);
+  };
+  for (const Wall& w : g.layout.walls)
+    for (const Vec2& v : w.points) {
+      include(v, behind + support);
+      if (w.motion.moves()) include(v + w.motion.displacement(w.motion.end), behind + support);
+    }
+  for (const Region& r : g.layout.regions)
+    for (const Vec2& v : r.outline) include(v, support);
+  // Soil thrown up to twice its height above its base; a scene of regions also that far sideways
+  // (the column's soil stays between its fixed wall and the floor's far end).
+  const double up = 2.0 * g.column_height + support;
+  d.y_max = std::max(d.y_max, g.base_level + up);
+  if (!g.column)
+    for (const Region& r : g.layout.regions)
+      for (const Vec2& v : r.outline) include(v, up);
+  return d;
+}
+
+/// The lowest wall along −g (the column: its floor surface, −Δp/2), the datum of the potential energy.
+double potential_datum(const Scene& scene) {
+  const Geometry& g = scene.geometry;
+  double datum = g.base_level - 0.5 * g.particle_spacing;
+  for (const Wall& w : g.layout.walls)
+    for (const Vec2& v : w.points) datum = std::min(datum, g.height(v));
+  return datum;
 }
 }  // namespace
 
@@ -39,6 +72,8 @@ SolverSetup make_solver_setup(const Scene& scene) {
           scene.output.frame_interval,
           momentum,
           wall_guard(scene),
+          wall_motions(scene),
+          potential_datum(scene),
           scene.numerics.velocity_gradient_correction,
           elasticity.kind() == Elasticity::Kind::PressureDependent,
           scene.rest,

@@ -52,6 +52,8 @@ struct SolverSetup {
   double frame_interval;
   MomentumParams momentum;
   WallGuard guard;
+  WallMotions walls;            ///< moving and removed walls (stages/boundaries.h)
+  double potential_datum = 0.0; ///< height of the lowest wall along −g (m), for the energy budget
   bool velocity_gradient_correction = false;  ///< stages/velocity_gradient.h
   bool pressure_dependent_stiffness = false;  ///< recompute c from the pressures at each search
   RestCriterion rest;
@@ -72,6 +74,7 @@ struct Workspace {
   std::vector<double> vx_next, vy_next, density_next;  ///< v^{n+½}, ρ^{n+1} while a step computes them
   std::vector<double> volume;  ///< m/ρ^n of every particle, for eq 23 (one division per particle, not per pair)
   double previous_dt = 0.0;  ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
+  double time = 0.0;         ///< t^n (s), for the walls' motion
   double sound_speed = 0.0;  ///< current c (m/s)
   double max_speed = 0.0;    ///< largest soil speed |v^{n+½}| after the last step (m/s)
   std::size_t moving = 0;    ///< soil particles faster than the rest speed after the last step
@@ -96,7 +99,9 @@ void close_step(const Model& model, const SolverSetup& setup, Particles& p, Work
   std::swap(p.vx, work.vx_next);
   std::swap(p.vy, work.vy_next);
   std::swap(p.density, work.density_next);
-  const std::size_t pushed = setup.guard.apply(p);
+  setup.walls.advance(p, work.time, dt);
+  work.time += dt;
+  const std::size_t pushed = setup.guard.apply(p, work.time);
   work.guard_corrections += pushed;
   work.previous_dt = dt;
   const double rest2 = setup.rest.speed * setup.rest.speed, c2 = work.sound_speed * work.sound_speed;
@@ -313,13 +318,15 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
     work.max_speed = resume->max_speed;
     work.moving = resume->moving;
     work.guard_corrections = stats.guard_corrections;
+    work.time = resume->stats.end_time;
+    setup.walls.set_velocities(p, work.time);
     work.failure.restore_fallback_updates(stats.fallback_stress_updates);
     // The same candidates as the run that saved the state: the search from the same positions.
     work.neighbours.search(resume->search_x, resume->search_y, setup.kernel, p.soil_count);
     work.search_next = work.neighbours.search_needed(p.x, p.y);
   }
   if constexpr (requires { model.elasticity(); })
-    work.energy_budget = energy_budget(p, model.elasticity(), setup.momentum.gravity, setup.guard.floor_y);
+    work.energy_budget = energy_budget(p, model.elasticity(), setup.momentum.gravity, setup.potential_datum);
   const double wall_before = stats.wall_seconds;
   double next_checkpoint = setup.checkpoint_interval > 0.0
                                ? setup.checkpoint_interval * (std::floor(clock.time() / setup.checkpoint_interval) + 1)

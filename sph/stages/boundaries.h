@@ -1,26 +1,47 @@
 #pragma once
 /// @file
-/// Fixed ghost (boundary) particles, paper §4.3: layers of particles on a lattice behind each wall,
-/// "carrying the same stress and density as the real SPH particles within the influence domain".
-/// Each step a boundary particle b takes the kernel (Shepard) average of its soil neighbours,
+/// Ghost (boundary) particles, paper §4.3: layers of particles behind each wall, "carrying the same
+/// stress and density as the real SPH particles within the influence domain". Each step a ghost b
+/// takes the kernel (Shepard) average of its soil neighbours,
 ///   ā_b = Σ_j a_j W_bj / Σ_j W_bj   (j soil),
-/// for the stress, the density and the velocity, then mirrors it according to the wall:
-///  - vertical walls, free slip: stress (σxx, σyy, −σxy) and velocity (−v̄x, v̄y). The mirrored shear
-///    cancels the soil's shear across the wall and the mirrored normal velocity makes the wall
-///    impermeable, while the tangential velocity is copied: no shear traction, free slip.
-///  - the floor, no slip: stress copied, velocity −v̄ (the wall velocity 2·0 − v̄ of Adami et al. 2012,
-///    J. Comput. Phys. 231:7057), so the velocity interpolates to zero at the wall: no slip.
-/// A boundary particle with no soil neighbour keeps zero stress and velocity and its density.
+/// for the stress, the density and the velocity, then mirrors it across its wall, whatever the
+/// wall's direction: with n the unit normal towards the soil, t = (−n_y, n_x) the tangent, v_w the
+/// wall's velocity and Δv = v̄ − v_w,
+///   velocity  v_b = v̄ − 2 (Δv·n) n − 2 s (Δv·t) t
+///   stress    σ_b = σ̄ + (2τ − 2σ̄_nt)(n⊗t + t⊗n),  σ̄_nt = n·σ̄·t,  τ = clamp(σ̄_nt, ±μ max(−σ̄_nn, 0))
+/// The normal relative velocity is always mirrored (the wall is impermeable and moves with v_w). The
+/// wall's shear traction, the average of the soil's and the ghost's σ_nt across it, is τ:
+///  - free slip, μ = 0: τ = 0, the shear stress and the tangential velocity are mirrored and copied
+///    (σ_b,nt = −σ̄_nt, s = 0): no shear traction;
+///  - no slip, μ = +∞: τ = σ̄_nt, the stress copied and the velocity 2 v_w − v̄ (s = 1; Adami et al.
+///    2012, J. Comput. Phys. 231:7057), so the velocity interpolates to v_w at the wall;
+///  - frictional, μ = tan δ: Coulomb's law on the wall, |τ| ≤ μ σ'_n with σ'_n = −σ̄_nn the normal
+///    compression the soil puts on it. While the soil's shear stress is within it (|σ̄_nt| < μ σ'_n)
+///    the wall sticks: as no slip (τ = σ̄_nt, s = 1). Beyond it the soil slides: the tangential
+///    velocity is copied as on a free-slip wall (s = 0) and the ghost's shear stress is set so that
+///    the wall carries exactly the limit, τ = ±μ σ'_n, against the soil's shear. A wall in tension
+///    (σ̄_nn ≥ 0) holds no shear. Measured: it holds a block on a slope flatter than δ, but a sliding
+///    block feels about a quarter of μσ'_n (the switch reads the soil's shear stress, which a sliding
+///    soil barely builds; docs/scenes.md, Limits): deciding it from the slip velocity is the next step.
+/// The stick flag s is decided with the stress (loop 1 of the step) and used for the velocity (loop 3).
+/// For axis-aligned walls with v_w = 0 these are the column's former formulas, operation for
+/// operation: (σxx, σyy, −σxy) and (−v̄x, v̄y) on a vertical free-slip wall, σ̄ and −v̄ on the no-slip
+/// floor (the multiplications by 0 and ±1 are exact). A ghost with no soil neighbour keeps zero stress
+/// and velocity and its density.
 #include <algorithm>
-#include <optional>
+#include <cmath>
+#include <limits>
+#include <numbers>
 #include <span>
+#include <vector>
 
+#include "sph/geometry/layout.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
 
 namespace soilsph::sph {
 
-/// Sets ghost b's stress and density from the soil (σ^n, ρ^n, before the momentum equation).
+/// Sets ghost b's stress, density and stick flag from the soil (σ^n, ρ^n, before the momentum equation).
 inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std::size_t b) {
   double sum_w = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, rho = 0.0;
   nl.for_each_pair(b, [&](const NeighbourList::Pair& q) {  // soil: no boundary–boundary pairs
@@ -34,10 +55,19 @@ inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std:
     p.sxx[b] = p.syy[b] = p.sxy[b] = 0.0;
     return;
   }
-  const double mirror = p.boundary_kind[b - p.soil_count] == BoundaryKind::FreeSlipWall ? -1.0 : 1.0;
-  p.sxx[b] = sxx / sum_w;
-  p.syy[b] = syy / sum_w;
-  p.sxy[b] = mirror * sxy / sum_w;
+  const std::size_t g = b - p.soil_count;
+  const double nx = p.wall_nx[g], ny = p.wall_ny[g], tx = -ny, ty = nx, mu = p.wall_friction[g];
+  sxx /= sum_w, syy /= sum_w, sxy /= sum_w;
+  const double s_nn = nx * (sxx * nx + sxy * ny) + ny * (sxy * nx + syy * ny);
+  const double s_nt = nx * (sxx * tx + sxy * ty) + ny * (sxy * tx + syy * ty);
+  const double limit = mu < std::numeric_limits<double>::infinity() ? mu * std::max(-s_nn, 0.0)
+                                                                    : std::numeric_limits<double>::infinity();
+  const double tau = std::clamp(s_nt, -limit, limit);
+  const double change = (2.0 * tau - s_nt) - s_nt;  // σ_b,nt − σ̄_nt
+  p.wall_stick[g] = std::abs(s_nt) < limit ? 1.0 : 0.0;
+  p.sxx[b] = sxx + change * (2.0 * nx * tx);
+  p.syy[b] = syy + change * (2.0 * ny * ty);
+  p.sxy[b] = sxy + change * (nx * ty + tx * ny);
   p.density[b] = rho / sum_w;
 }
 
@@ -55,9 +85,13 @@ inline void mirror_velocity_onto_ghost(const Particles& p, const NeighbourList& 
     vx[b] = vy[b] = 0.0;
     return;
   }
-  const double tangential = p.boundary_kind[b - p.soil_count] == BoundaryKind::FreeSlipWall ? 1.0 : -1.0;
-  vx[b] = -vx_sum / sum_w;
-  vy[b] = tangential * vy_sum / sum_w;
+  const std::size_t g = b - p.soil_count;
+  const double nx = p.wall_nx[g], ny = p.wall_ny[g], tx = -ny, ty = nx, s = p.wall_stick[g];
+  const double v_x = vx_sum / sum_w, v_y = vy_sum / sum_w;
+  const double dvx = v_x - p.wall_vx[g], dvy = v_y - p.wall_vy[g];
+  const double dn = dvx * nx + dvy * ny, dt = dvx * tx + dvy * ty;
+  vx[b] = v_x - 2.0 * dn * nx - 2.0 * s * dt * tx;
+  vy[b] = v_y - 2.0 * dn * ny - 2.0 * s * dt * ty;
 }
 
 /// Every ghost's stress and density (orphaned OpenMP loop).
@@ -76,30 +110,83 @@ inline void mirror_velocity_onto_boundary(Particles& p, const NeighbourList& nl)
     mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), p.vx, p.vy);
 }
 
-/// The last line of defence: the wall surfaces lie half a spacing in front of the first boundary
-/// layer; a soil particle found beyond one is put back on it and its normal velocity into the wall
-/// is removed. With the ghost particles' stress and the viscosity this should never act; the
-/// solver counts how often it does and reports it.
-struct WallGuard {
-  double floor_y;                     ///< floor surface (m)
-  double right_wall_x;                ///< fixed wall surface (m)
-  std::optional<double> left_wall_x;  ///< removable wall surface, if the wall is there
+/// The friction coefficient μ a ghost of this wall mirrors with (see above).
+inline double wall_friction_coefficient(const Wall& wall) {
+  switch (wall.kind) {
+    case WallKind::FreeSlip: return 0.0;
+    case WallKind::NoSlip: return std::numeric_limits<double>::infinity();
+    case WallKind::Frictional: break;
+  }
+  return std::tan(wall.friction_angle * std::numbers::pi / 180.0);
+}
 
-  /// Returns the number of particles corrected.
-  std::size_t apply(Particles& p) const {
+/// The walls that move or go during a run: their ghosts move with them (the same displacement as
+/// the wall over each step, so the ghosts sweep through the soil rather than jump) and carry their
+/// velocity; a removed wall's ghosts lose their mass, so no pair feels them any more.
+struct WallMotions {
+  std::vector<WallMotion> motions;  ///< by wall index
+  bool any = false;                 ///< some wall moves or is removed after t = 0
+
+  /// Moves the ghosts over [t, t + dt] and sets their wall velocity and mass for time t + dt (serial).
+  void advance(Particles& p, double t, double dt) const {
+    if (!any) return;
+    for (std::size_t g = 0; g < p.boundary_count(); ++g) {
+      const WallMotion& m = motions[static_cast<std::size_t>(p.wall_id[g])];
+      const std::size_t b = p.soil_count + g;
+      const Vec2 d = m.displacement(t, dt);
+      p.x[b] += d.x, p.y[b] += d.y;
+      if (t + dt >= m.removed_at) p.mass[b] = 0.0;
+    }
+    set_velocities(p, t + dt);
+  }
+  /// The wall velocity of every ghost at time t (the velocity of the motion it is in, if any).
+  void set_velocities(Particles& p, double t) const {
+    if (!any) return;
+    for (std::size_t g = 0; g < p.boundary_count(); ++g) {
+      const WallMotion& m = motions[static_cast<std::size_t>(p.wall_id[g])];
+      const bool moving = m.moves() && t >= m.start && t < m.end;
+      p.wall_vx[g] = moving ? m.velocity.x : 0.0;
+      p.wall_vy[g] = moving ? m.velocity.y : 0.0;
+    }
+  }
+};
+
+/// The last line of defence: a soil particle found behind a wall surface (within the wall's ghost
+/// layers, along its length) is put back on it and its velocity into the wall, relative to the wall,
+/// removed. With the ghost particles' stress and the viscosity this should never act; the solver
+/// counts how often it does and reports it.
+struct WallGuard {
+  /// One straight piece of a wall surface.
+  struct Face {
+    Vec2 a, b;         ///< end points at t = 0, the soil on the left from a to b
+    double depth;      ///< how far behind the surface (and beyond its ends) the guard reaches (m)
+    WallMotion motion;
+  };
+  std::vector<Face> faces;
+
+  /// Returns the number of particles corrected at time t (one put back on the surface may lie an
+  /// ulp behind it: that is not beyond).
+  std::size_t apply(Particles& p, double t) const {
     std::size_t corrected = 0;
-    for (std::size_t i = 0; i < p.soil_count; ++i) {
-      bool hit = false;
-      if (p.y[i] < floor_y) {
-        p.y[i] = floor_y, p.vy[i] = std::max(p.vy[i], 0.0), hit = true;
+    for (const Face& f : faces) {
+      if (t >= f.motion.removed_at) continue;
+      const Vec2 shift = f.motion.displacement(t), a = f.a + shift;
+      const Vec2 along = f.b - f.a;
+      const double length = norm(along);
+      const Vec2 tangent = (1.0 / length) * along, n{-tangent.y, tangent.x};
+      const bool moving = f.motion.moves() && t >= f.motion.start && t < f.motion.end;
+      const Vec2 vw = moving ? f.motion.velocity : Vec2{};
+      const double c = dot(a, n), behind = -1e-12 * f.depth;  // d = x·n − a·n: one product pair per particle
+      for (std::size_t i = 0; i < p.soil_count; ++i) {
+        const double d = p.x[i] * n.x + p.y[i] * n.y - c;
+        if (!(d < behind)) continue;  // in front of the wall: nearly every particle, every step
+        const double s = (p.x[i] - a.x) * tangent.x + (p.y[i] - a.y) * tangent.y;
+        if (d < -f.depth || s < -f.depth || s > length + f.depth) continue;
+        p.x[i] -= d * n.x, p.y[i] -= d * n.y;
+        const double vn = (p.vx[i] - vw.x) * n.x + (p.vy[i] - vw.y) * n.y;
+        if (vn < 0.0) p.vx[i] -= vn * n.x, p.vy[i] -= vn * n.y;
+        ++corrected;
       }
-      if (p.x[i] > right_wall_x) {
-        p.x[i] = right_wall_x, p.vx[i] = std::min(p.vx[i], 0.0), hit = true;
-      }
-      if (left_wall_x && p.x[i] < *left_wall_x) {
-        p.x[i] = *left_wall_x, p.vx[i] = std::max(p.vx[i], 0.0), hit = true;
-      }
-      corrected += hit;
     }
     return corrected;
   }

@@ -8,6 +8,7 @@
 /// R the artificial stress (stages/artificial_stress.h). Sums run over soil and boundary neighbours.
 #include <cmath>
 
+#include "sph/geometry/vec2.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
 #include "sph/stages/artificial_stress.h"
@@ -19,7 +20,7 @@ struct MomentumParams {
   double viscosity_beta = 0.1;    ///< β_Π
   double sound_speed = 0.0;       ///< c (m/s), the elastic P-wave speed (time_step.h)
   double smoothing_length = 0.0;  ///< h (m)
-  double gravity = 9.81;          ///< m/s², acting along −y
+  Vec2 gravity{0.0, -9.81};       ///< m/s²
   ArtificialStress artificial_stress;
 };
 
@@ -67,7 +68,7 @@ inline Acceleration acceleration_of(const Particles& p, const NeighbourList& nl,
     ax += p.mass[j] * (txx * q.gx + txy * q.gy);
     ay += p.mass[j] * (txy * q.gx + tyy * q.gy);
   });
-  return {ax, ay - m.gravity};
+  return {ax + m.gravity.x, ay + m.gravity.y};
 }
 
 /// Fills p.ax, p.ay for every soil particle (orphaned OpenMP loops).

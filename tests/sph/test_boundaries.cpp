@@ -48,7 +48,8 @@ Outcome throw_block(bool at_floor, double v0) {
   for (double t = 0.0; t < setup.end_time; t += dt) {
     advance(std::get<LinearElastic>(scene.material), setup, p, work, dt);
     for (std::size_t i = 0; i < p.soil_count; ++i) {
-      const double beyond = at_floor ? setup.guard.floor_y - p.y[i] : p.x[i] - setup.guard.right_wall_x;
+      // The floor surface y = −Δp/2, the fixed wall's x = W + Δp/2 (geometry/column.h).
+      const double beyond = at_floor ? -0.001 - p.y[i] : p.x[i] - (0.016 + 0.001);
       o.deepest_penetration = std::max(o.deepest_penetration, beyond);
     }
   }
@@ -81,14 +82,18 @@ TEST_CASE("the wall guard puts back a particle found beyond a wall", "[boundarie
   Particles p = test::lattice(2, 1.0e-3, 2000.0);
   p.x[0] = -0.01, p.vx[0] = -1.0;  // beyond the left wall, moving out
   p.y[1] = -0.01, p.vy[1] = -1.0;  // below the floor, moving down
-  p.x[3] = 0.5, p.vx[3] = 2.0;     // beyond the right wall
-  const WallGuard guard{-5e-4, 0.04, -5e-4};
-  CHECK(guard.apply(p) == 3);
-  CHECK(p.x[0] == -5e-4);
+  p.x[3] = 0.05, p.vx[3] = 2.0;    // beyond the right wall
+  // The column's three walls as surfaces with the soil on their left: floor, fixed, removable.
+  const double depth = 0.02;
+  const WallGuard guard{{{{-0.3, -5e-4}, {0.04, -5e-4}, depth, {}},
+                         {{0.04, -5e-4}, {0.04, 0.1}, depth, {}},
+                         {{-5e-4, 0.1}, {-5e-4, -5e-4}, depth, {}}}};
+  CHECK(guard.apply(p, 0.0) == 3);
+  CHECK(p.x[0] == Approx(-5e-4));
   CHECK(p.vx[0] == 0.0);
-  CHECK(p.y[1] == -5e-4);
+  CHECK(p.y[1] == Approx(-5e-4));
   CHECK(p.vy[1] == 0.0);
-  CHECK(p.x[3] == 0.04);
+  CHECK(p.x[3] == Approx(0.04));
   CHECK(p.vx[3] == 0.0);
-  CHECK(guard.apply(p) == 0);
+  CHECK(guard.apply(p, 0.0) == 0);
 }

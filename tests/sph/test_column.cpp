@@ -57,8 +57,8 @@ void check_collapse(const char* name) {
   double xmin = 1.0, xmax = -1.0, ymin = 1.0;
   for (std::size_t i = 0; i < p.soil_count; ++i)
     xmin = std::min(xmin, p.x[i]), xmax = std::max(xmax, p.x[i]), ymin = std::min(ymin, p.y[i]);
-  CHECK(xmax <= r.setup.guard.right_wall_x);
-  CHECK(ymin >= r.setup.guard.floor_y);
+  CHECK(xmax <= 0.04 + 0.5 * scene.geometry.particle_spacing);  // the fixed wall's surface
+  CHECK(ymin >= -0.5 * scene.geometry.particle_spacing);        // the floor's surface
   CHECK(xmin > 0.04 - 0.25);  // still on the floor
   // At rest before the end time: 99 % of the particles below 1 % of √(2gH) for √(H/g) (sph/rest.h);
   // a few surface grains may still roll.

@@ -64,7 +64,7 @@ TEST_CASE("eq 12: a stress gradient accelerates by dsigma/dx / rho, a uniform st
   MomentumParams params;
   params.sound_speed = 26.0;
   params.smoothing_length = W.smoothing_length();
-  params.gravity = 9.81;
+  params.gravity = {0.0, -9.81};
   params.artificial_stress.enabled = false;
   compute_acceleration(p, nl, params);
   const double m = lattice_moment(W);
@@ -87,7 +87,7 @@ TEST_CASE("eq 37: the viscosity pushes approaching particles apart and leaves re
     nl.build(p.x, p.y, W);
     MomentumParams params;
     params.viscosity_alpha = 1.0, params.viscosity_beta = 1.0, params.sound_speed = 26.0;
-    params.smoothing_length = W.smoothing_length(), params.gravity = 0.0;
+    params.smoothing_length = W.smoothing_length(), params.gravity = {0.0, 0.0};
     params.artificial_stress.enabled = false;
     compute_acceleration(p, nl, params);
     if (v > 0) {

@@ -18,14 +18,16 @@ struct FreeFall {
                     1.0,
                     1.0,
                     MomentumParams{},
-                    WallGuard{-1e9, 1e9, std::nullopt},
+                    WallGuard{},
+                    WallMotions{},
+                    0.0,
                     false,
                     false,
                     RestCriterion{},
                     Domain{},
                     0.0};
   FreeFall() {
-    setup.momentum.gravity = 9.81;
+    setup.momentum.gravity = {0.0, -9.81};
     setup.momentum.smoothing_length = 1.3e-3;
     setup.momentum.artificial_stress.enabled = false;
     p.y[0] = 1.0;

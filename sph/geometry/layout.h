@@ -1,0 +1,76 @@
+#pragma once
+/// @file
+/// A scene's geometry as data (docs/scenes.md): soil regions (boxes and polygons, each naming its
+/// material) and boundaries (straight walls and polylines, each with a kind and an optional motion),
+/// on one particle lattice. The column keys of [scene] build one (geometry/column.h); the
+/// [[regions]] and [[boundaries]] tables build any other (geometry/read_layout.h). The lattice
+/// builder, the ghost particles, the wall guard and the initial stress all read it.
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sph/geometry/vec2.h"
+
+namespace soilsph::sph {
+
+/// A soil region: filled with the lattice nodes that lie inside its outline (docs/scenes.md).
+struct Region {
+  enum class Shape { Box, Polygon };
+  Shape shape = Shape::Box;
+  std::vector<Vec2> outline;  ///< counter-clockwise; a box as its four corners from (min.x, min.y)
+  std::string material;       ///< the name of its [materials.NAME] table ("" for [material])
+  std::string name;           ///< for messages, e.g. "[[regions]] #1"
+};
+
+/// How a wall acts on the soil (stages/boundaries.h has the mirroring of each).
+enum class WallKind : unsigned char { FreeSlip = 0, NoSlip = 1, Frictional = 2 };
+
+/// A wall's motion: still, removed at a time, and/or moving at a constant velocity from `start` to
+/// `end` (before and after it stands still).
+struct WallMotion {
+  double removed_at = std::numeric_limits<double>::infinity();  ///< s; 0: never there (withdrawn at t = 0)
+  Vec2 velocity;                                                ///< m/s while it moves
+  double start = 0.0, end = 0.0;                                ///< s, the moving interval
+
+  bool moves() const { return end > start && (velocity.x != 0.0 || velocity.y != 0.0); }
+  /// Displacement from its initial position at time t.
+  Vec2 displacement(double t) const;
+  /// Displacement during [t, t + dt].
+  Vec2 displacement(double t, double dt) const;
+  /// Velocity during the step [t, t + dt] (the mean over it: its displacement over dt).
+  Vec2 velocity_during(double t, double dt) const;
+};
+
+/// Where one straight wall's ghost particles sit: rows parallel to the wall, `layers` deep behind
+/// it, `count` along it: anchor + (c Δp) tangent + (k Δp) outward for c = 0 … count − 1,
+/// k = 1 … layers. The anchor lies on the soil's lattice line (half a spacing in front of the wall
+/// surface), at the first row along the wall.
+struct GhostStrip {
+  Vec2 anchor;
+  Vec2 tangent;  ///< unit, the direction the rows are laid in
+  Vec2 outward;  ///< unit normal pointing away from the soil (into the wall)
+  int count = 0;
+};
+
+/// A boundary: a polyline wall surface with the soil on its left, walking from the first point to
+/// the last.
+struct Wall {
+  std::vector<Vec2> points;
+  WallKind kind = WallKind::FreeSlip;
+  double friction_angle = 0.0;  ///< degrees, Frictional only
+  WallMotion motion;
+  std::string name;  ///< for messages, e.g. "[[boundaries]] #2"
+  /// Set only where the ghosts must sit exactly as a builder computed them (the column shorthand:
+  /// W + kΔp, not (W + Δp/2) − Δp/2 + kΔp, so that the column stays bit-identical); otherwise
+  /// computed from the points (geometry/lattice.h).
+  std::vector<GhostStrip> strips;
+};
+
+struct Layout {
+  std::vector<Region> regions;
+  std::vector<Wall> walls;
+  Vec2 lattice_origin;  ///< a node of the soil lattice: nodes at origin + (i Δp, j Δp)
+};
+
+}  // namespace soilsph::sph

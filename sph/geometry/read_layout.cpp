@@ -1,0 +1,194 @@
+#include "sph/geometry/read_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "constitutive/parameters.h"
+#include "sph/geometry/polygon.h"
+
+namespace soilsph::sph {
+
+namespace {
+
+toml::array as_array(Vec2 v) { return toml::array{v.x, v.y}; }
+
+/// The tables of an array of tables `name` (empty if absent), with "[[name]] #k" for messages.
+std::vector<std::pair<const toml::table*, std::string>> tables_of(const toml::table& root, const std::string& source,
+                                                                  std::string_view name) {
+  std::vector<std::pair<const toml::table*, std::string>> tables;
+  const toml::node* node = root.get(name);
+  if (!node) return tables;
+  const toml::array* array = node->as_array();
+  if (!array) throw ParameterError(source + ": " + std::string(name) + " must be an array of tables ([[" + std::string(name) + "]])");
+  for (std::size_t k = 0; k < array->size(); ++k) {
+    const std::string label = std::string(name) + " #" + std::to_string(k + 1);
+    if (!(*array)[k].is_table()) throw ParameterError(source + ": [" + label + "] must be a table ([[" + std::string(name) + "]])");
+    tables.emplace_back((*array)[k].as_table(), label);
+  }
+  return tables;
+}
+
+}  // namespace
+
+Vec2 read_vector(const toml::node& node, const std::string& where, std::string_view unit) {
+  const toml::array* a = node.as_array();
+  const std::string expected = " must be [x, y], two finite numbers (" + std::string(unit) + ", |value| <= " +
+                               format_number(kLargestCoordinate) + ")";
+  if (!a || a->size() != 2) throw ParameterError(where + expected);
+  Vec2 v;
+  for (int c = 0; c < 2; ++c) {
+    const toml::node& e = (*a)[static_cast<std::size_t>(c)];
+    const std::optional<double> x = e.value<double>();
+    if (!x || e.is_boolean() || !std::isfinite(*x) || std::abs(*x) > kLargestCoordinate) throw ParameterError(where + expected);
+    (c == 0 ? v.x : v.y) = *x;
+  }
+  return v;
+}
+
+namespace {
+
+std::vector<Vec2> points_of(const toml::table& table, const std::string& where, std::size_t least) {
+  const toml::node* node = table.get("points");
+  const std::string hint = " (an array of at least " + std::to_string(least) + " [x, y] points, m)";
+  if (!node) throw ParameterError(where + " points is missing" + hint);
+  const toml::array* a = node->as_array();
+  if (!a || a->size() < least) throw ParameterError(where + " points must be" + hint);
+  std::vector<Vec2> points;
+  for (std::size_t k = 0; k < a->size(); ++k)
+    points.push_back(read_vector((*a)[k], where + " points[" + std::to_string(k + 1) + "]", "m"));
+  return points;
+}
+
+toml::array array_of(const std::vector<Vec2>& points) {
+  toml::array a;
+  for (const Vec2& p : points) a.push_back(as_array(p));
+  return a;
+}
+
+/// A box side must fall on a cell edge of the lattice, origin + (i + ½)Δp, so that the box holds
+/// whole cells: its mass is then exactly ρ × its area.
+void check_on_cell_edge(const std::string& where, std::string_view key, char axis, double value, double origin,
+                        double dx) {
+  const double cells = (value - origin) / dx - 0.5, nearest = std::round(cells);
+  if (std::abs(cells - nearest) <= 1e-6) return;
+  const double below = origin + (std::floor(cells) + 0.5) * dx, above = below + dx;
+  throw ParameterError(where + " " + std::string(key) + " " + axis + " = " + format_number(value) +
+                       " m does not fall on a cell edge of the lattice (" + axis + " = " + format_number(origin) +
+                       " + (i + 1/2) x " + format_number(dx) + " m); the nearest are " + format_number(below) +
+                       " and " + format_number(above) + " m (or move [scene] lattice_origin)");
+}
+
+Region read_region(const toml::table& table, const std::string& label, const std::string& source, double dx,
+                   Vec2 origin, const std::vector<std::string>& materials, toml::table& resolved) {
+  const TableReader t(table, source, label);
+  const std::string where = source + ": [" + label + "]";
+  Region region;
+  region.name = "[" + label + "]";
+  const std::string shape = t.choice("shape", {"box", "polygon"});
+  resolved.insert("shape", shape);
+  if (shape == "box") {
+    region.shape = Region::Shape::Box;
+    t.accept({"min", "max"});
+    const toml::node* lo = table.get("min");
+    const toml::node* hi = table.get("max");
+    if (!lo || !hi) throw ParameterError(where + " a box needs min = [x, y] and max = [x, y] (m)");
+    const Vec2 a = read_vector(*lo, where + " min", "m"), b = read_vector(*hi, where + " max", "m");
+    if (!(b.x > a.x && b.y > a.y))
+      throw ParameterError(where + " max must exceed min in x and in y (an empty box)");
+    check_on_cell_edge(where, "min", 'x', a.x, origin.x, dx);
+    check_on_cell_edge(where, "min", 'y', a.y, origin.y, dx);
+    check_on_cell_edge(where, "max", 'x', b.x, origin.x, dx);
+    check_on_cell_edge(where, "max", 'y', b.y, origin.y, dx);
+    region.outline = {a, {b.x, a.y}, b, {a.x, b.y}};
+    resolved.insert("min", as_array(a));
+    resolved.insert("max", as_array(b));
+  } else {
+    region.shape = Region::Shape::Polygon;
+    t.accept({"points"});
+    region.outline = points_of(table, where, 3);
+    if (const auto defect = polygon_defect(region.outline)) throw ParameterError(where + " points: the polygon " + *defect);
+    resolved.insert("points", array_of(region.outline));
+    if (signed_area(region.outline) < 0.0) std::reverse(region.outline.begin(), region.outline.end());
+  }
+  if (materials.size() == 1 && !t.has("material")) {
+    region.material = materials.front();
+  } else {
+    std::vector<std::string_view> names(materials.begin(), materials.end());
+    region.material = t.choice("material", names);
+  }
+  if (!region.material.empty()) resolved.insert("material", region.material);
+  t.reject_unknown_keys();
+  return region;
+}
+
+Wall read_wall(const toml::table& table, const std::string& label, const std::string& source, toml::table& resolved) {
+  const TableReader t(table, source, label);
+  const std::string where = source + ": [" + label + "]";
+  Wall wall;
+  wall.name = "[" + label + "]";
+  t.accept({"points", "velocity"});
+  wall.points = points_of(table, where, 2);
+  for (std::size_t k = 0; k + 1 < wall.points.size(); ++k) {
+    const double length = norm(wall.points[k + 1] - wall.points[k]);
+    if (!(length > 1e-9)) throw ParameterError(where + " points: piece " + std::to_string(k + 1) + " has zero length");
+    if (k > 0) {
+      const Vec2 u = wall.points[k] - wall.points[k - 1], v = wall.points[k + 1] - wall.points[k];
+      if (std::abs(cross(u, v)) <= 1e-12 * norm(u) * norm(v) && dot(u, v) < 0.0)
+        throw ParameterError(where + " points: the polyline folds back on itself at point " + std::to_string(k + 1));
+    }
+  }
+  resolved.insert("points", array_of(wall.points));
+  const std::string kind = t.choice("kind", {"free-slip", "no-slip", "frictional"});
+  resolved.insert("kind", kind);
+  wall.kind = kind == "free-slip" ? WallKind::FreeSlip : kind == "no-slip" ? WallKind::NoSlip : WallKind::Frictional;
+  if (wall.kind == WallKind::Frictional) {
+    wall.friction_angle = t.number("wall_friction_angle", Range::open(0.0, 90.0), "degrees");
+    resolved.insert("wall_friction_angle", wall.friction_angle);
+  }
+  if (t.has("removed_at")) {
+    wall.motion.removed_at = t.number("removed_at", Range::non_negative(), "s");
+    resolved.insert("removed_at", wall.motion.removed_at);
+  }
+  if (const toml::node* v = table.get("velocity")) {
+    wall.motion.velocity = read_vector(*v, where + " velocity", "m/s");
+    wall.motion.start = t.number_or("start", 0.0, Range::non_negative(), "s");
+    wall.motion.end = t.number("end", Range::open(wall.motion.start, std::numeric_limits<double>::infinity()), "s");
+    resolved.insert("velocity", as_array(wall.motion.velocity));
+    resolved.insert("start", wall.motion.start);
+    resolved.insert("end", wall.motion.end);
+  } else if (t.has("start") || t.has("end")) {
+    t.fail(t.has("start") ? "start" : "end", "needs velocity = [vx, vy] (m/s): start and end time a motion");
+  }
+  t.reject_unknown_keys();
+  return wall;
+}
+
+}  // namespace
+
+toml::array read_boundaries(const toml::table& root, const std::string& source, std::vector<Wall>& walls) {
+  toml::array resolved;
+  for (const auto& [table, label] : tables_of(root, source, "boundaries")) {
+    toml::table r;
+    walls.push_back(read_wall(*table, label, source, r));
+    resolved.push_back(std::move(r));
+  }
+  return resolved;
+}
+
+ReadLayout read_layout(const toml::table& root, const std::string& source, double spacing, Vec2 origin,
+                       const std::vector<std::string>& materials) {
+  ReadLayout out;
+  out.layout.lattice_origin = origin;
+  for (const auto& [table, label] : tables_of(root, source, "regions")) {
+    toml::table r;
+    out.layout.regions.push_back(read_region(*table, label, source, spacing, origin, materials, r));
+    out.regions.push_back(std::move(r));
+  }
+  if (out.layout.regions.empty()) throw ParameterError(source + ": no soil: give [[regions]] or the [scene] column keys");
+  out.boundaries = read_boundaries(root, source, out.layout.walls);
+  return out;
+}
+
+}  // namespace soilsph::sph

@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Reads [[regions]] and [[boundaries]] (docs/scenes.md): every key validated, each error naming the
+/// file, the table (e.g. "[[boundaries]] #2") and the key.
+#include <string>
+#include <toml++/toml.h>
+
+#include "sph/geometry/layout.h"
+
+namespace soilsph::sph {
+
+struct ReadLayout {
+  Layout layout;
+  toml::array regions, boundaries;  ///< as read, defaults resolved (the scene as run)
+};
+
+/// The regions and boundaries of `root` on the lattice of `spacing` from `origin`; a region's
+/// `material` must be one of `materials` (its default: the only one).
+ReadLayout read_layout(const toml::table& root, const std::string& source, double spacing, Vec2 origin,
+                       const std::vector<std::string>& materials);
+
+/// The boundaries alone (a column scene may add walls, e.g. a gate, to those of its shorthand).
+toml::array read_boundaries(const toml::table& root, const std::string& source, std::vector<Wall>& walls);
+
+/// An [x, y] pair of finite numbers (m or m/s) at `where`; throws ParameterError otherwise.
+Vec2 read_vector(const toml::node& node, const std::string& where, std::string_view unit);
+
+/// The largest coordinate magnitude accepted (m): beyond it a scene is a typo.
+inline constexpr double kLargestCoordinate = 1e4;
+
+}  // namespace soilsph::sph
