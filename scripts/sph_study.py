@@ -244,7 +244,7 @@ def plot_cut(rows, out, unit):
     for ax, s in zip(axes[0], spacings):
         for r in (r for r in rows if r["spacing_m"] == s and r["status"] == "ok"):
             with h5py.File(out / "runs" / r["run"] / "frames.h5") as f:
-                frames = sorted(f.keys())
+                frames = sorted(k for k in f.keys() if k.startswith("frame_"))
                 t = [f[k].attrs["time"] for k in frames]
                 face = [-f[k]["position"][:, 0].min() for k in frames]  # soil particles only
             ax.plot(t, [1000 * v for v in face],
