@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "helpers.h"
+#include "../common/material_toml.h"
 #include "sph/diagnostics.h"
 #include "sph/solver.h"
 
@@ -22,12 +23,7 @@ end_time = 0.04
 gravity = 0.0
 wall_withdrawal = "none"
 floor_length = 0.03
-[material]
-model = "linear-elastic"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-)";
+)" + fixtures::kLinearElasticToml;
 
 struct Outcome {
   double deepest_penetration;  ///< largest distance beyond the wall surface reached (m), ≤ 0 if none

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "helpers.h"
+#include "../common/material_toml.h"
 #include "sph/geometry/polygon.h"
 
 using namespace soilsph;
@@ -24,12 +25,7 @@ end_time = 0.1
 gravity = 9.81
 wall_withdrawal = "none"
 floor_length = 0.25
-[material]
-model = "linear-elastic"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-)";
+)" + fixtures::kLinearElasticToml;
 
 // The same column by hand: particle centres on [0, W] x [0, H], so its cells span
 // [-dx/2, W + dx/2] x [-dx/2, H + dx/2] with dx = 2 mm; the walls are the cells' outer edges and

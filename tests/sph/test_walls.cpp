@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "helpers.h"
+#include "../common/material_toml.h"
 #include "sph/diagnostics.h"
 #include "sph/solver.h"
 
@@ -16,13 +17,7 @@ using namespace soilsph;
 using namespace soilsph::sph;
 
 namespace {
-const std::string kElastic = R"(
-[material]
-model = "linear-elastic"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-)";
+const std::string& kElastic = fixtures::kLinearElasticToml;
 
 /// Runs `scene` from its geostatic state to its end time with fixed CFL steps; returns the particles.
 struct Ran {

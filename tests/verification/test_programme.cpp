@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "constitutive/parameters.h"
+#include "../common/material_toml.h"
 #include "verification/programme/programme_file.h"
 
 using namespace soilsph;
@@ -37,13 +38,7 @@ std::filesystem::path write_file(const std::string& name, const std::string& tex
   return path;
 }
 
-const std::string kLinear = R"(
-[material]
-model = "linear-elastic"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-)";
+const std::string& kLinear = fixtures::kLinearElasticToml;
 }  // namespace
 
 TEST_CASE("every shipped programme runs with its integrator and with CVODE, and they agree", "[programme]") {
