@@ -7,33 +7,22 @@
 #include <cstdio>
 
 #include "tests/common/table1_materials.h"
+#include "tests/integrators/stiff_clay_paths.h"
 #include "verification/point_test.h"
 #include "verification/report/curve_errors.h"
 
 using namespace soilsph;
 using namespace soilsph::verification;
+using soilsph::test::error_vs_cvode;
+using soilsph::test::triaxial;
 
 namespace {
-PointTest triaxial(LoadPath path, double ocr, int increments) {
-  PointTest t;
-  t.path = path;
-  t.p_initial = 200e3;
-  t.ocr = ocr;
-  t.strain_targets = {0.1};
-  t.increments = increments;
-  return t;
-}
-
 ModifiedCamClay table1(Elasticity::Kind kind, double implicit_tolerance) {
   auto params = test::table1_cam_clay_params(kind);
   params.implicit_tolerance = implicit_tolerance;
   return ModifiedCamClay(params);
 }
 
-double error_vs_cvode(const Material& material, const PointTest& test, const char* integrator) {
-  const PointCurve reference = run_point_test(material, test, kReferenceIntegrator);
-  return curve_errors(run_point_test(material, test, integrator), as_reference(reference), test.path).max();
-}
 }  // namespace
 
 TEST_CASE("MCC implicit with implicit_tolerance = 1e-4: undrained triaxial within 1e-3 of CVODE in 20 increments",

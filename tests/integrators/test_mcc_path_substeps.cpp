@@ -5,25 +5,17 @@
 #include <catch2/catch.hpp>
 
 #include "tests/common/table1_materials.h"
+#include "tests/integrators/stiff_clay_paths.h"
 #include "verification/point_test.h"
 #include "verification/report/curve_errors.h"
 
 using namespace soilsph;
 using namespace soilsph::verification;
+using soilsph::test::error_vs_cvode;
+using soilsph::test::triaxial;
 
 namespace {
 constexpr double kTarget = 1e-3;  // the issue's target, relative (curve_errors)
-
-PointTest triaxial(LoadPath path, double ocr, double path_tolerance) {
-  PointTest t;
-  t.path = path;
-  t.p_initial = 200e3;
-  t.ocr = ocr;
-  t.strain_targets = {0.1};
-  t.increments = 20;
-  t.path_tolerance = path_tolerance;
-  return t;
-}
 
 Material clay(Elasticity::Kind kind, Integrator integrator, double implicit_tolerance, double substep_tolerance = 1e-6) {
   auto params = test::table1_cam_clay_params(kind);
@@ -33,12 +25,6 @@ Material clay(Elasticity::Kind kind, Integrator integrator, double implicit_tole
   return ModifiedCamClay(params);
 }
 
-double error_vs_cvode(const Material& material, const PointTest& test, const char* integrator) {
-  const PointCurve reference = run_point_test(material, test, kReferenceIntegrator);
-  const PointCurve curve = run_point_test(material, test, integrator);
-  REQUIRE(curve.size() == 21);  // one row per requested increment, sub-steps or not
-  return curve_errors(curve, as_reference(reference), test.path).max();
-}
 }  // namespace
 
 TEST_CASE("MCC drained, K ∝ p, 20 increments: the driver's path error exceeds 1e-3 without sub-steps",
@@ -48,9 +34,9 @@ TEST_CASE("MCC drained, K ∝ p, 20 increments: the driver's path error exceeds 
   const Material accurate = clay(Elasticity::Kind::PressureDependent, Integrator::Substep, 0.0, 1e-8);
   for (double ocr : {1.0, 1.5}) {
     INFO("OCR " << ocr);
-    CHECK(error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, ocr, 0.0), "substep") > kTarget);
+    CHECK(error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, ocr, 20, 0.0), "substep") > kTarget);
     // With the sub-steps the same integration meets the target: the error was the path's.
-    CHECK(error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, ocr, 1e-5), "substep") <= kTarget);
+    CHECK(error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, ocr, 20, 1e-5), "substep") <= kTarget);
   }
 }
 
@@ -63,7 +49,7 @@ TEST_CASE("MCC implicit with driver sub-steps and implicit_tolerance: every tria
         INFO((kind == Elasticity::Kind::Constant ? "constant E" : "K ∝ p") << ", " << load_path_name(path) << ", OCR "
                                                                              << ocr);
         const Material mcc = clay(kind, Integrator::Implicit, 1e-4);
-        CHECK(error_vs_cvode(mcc, triaxial(path, ocr, 1e-5), "implicit") <= kTarget);
+        CHECK(error_vs_cvode(mcc, triaxial(path, ocr, 20, 1e-5), "implicit") <= kTarget);
       }
 }
 
@@ -71,8 +57,8 @@ TEST_CASE("Driver sub-steps: the path error falls with the tolerance", "[integra
   // Step doubling controls the error: a 10× tighter tolerance gives a smaller error against CVODE
   // (the near-exact integrator isolates the driver's part).
   const Material accurate = clay(Elasticity::Kind::PressureDependent, Integrator::Substep, 0.0, 1e-8);
-  const double loose = error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, 1.0, 1e-3), "substep");
-  const double tight = error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, 1.0, 1e-5), "substep");
+  const double loose = error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, 1.0, 20, 1e-3), "substep");
+  const double tight = error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, 1.0, 20, 1e-5), "substep");
   INFO("path_tolerance 1e-3: " << loose << ", 1e-5: " << tight);
   CHECK(tight < 0.5 * loose);
 }
@@ -80,7 +66,7 @@ TEST_CASE("Driver sub-steps: the path error falls with the tolerance", "[integra
 TEST_CASE("Driver sub-steps: path_tolerance outside its range is rejected", "[path-substeps]") {
   const Material mcc = clay(Elasticity::Kind::PressureDependent, Integrator::Implicit, 0.0);
   for (double bad : {-1e-3, 1e-13, 0.5})
-    CHECK_THROWS_AS(run_point_test(mcc, triaxial(LoadPath::TriaxialDrained, 1.0, bad), "implicit"),
+    CHECK_THROWS_AS(run_point_test(mcc, triaxial(LoadPath::TriaxialDrained, 1.0, 20, bad), "implicit"),
                     std::invalid_argument);
 }
 
@@ -104,7 +90,7 @@ TEST_CASE("MCC errors at 20 increments with and without driver sub-steps (printe
           std::printf("%-8s %-19s OCR %.1f %-15s", kind == Elasticity::Kind::Constant ? "const-E" : "K~p",
                       std::string(load_path_name(path)).c_str(), ocr, s.label);
           for (double path_tolerance : {0.0, 1e-3, 1e-4, 1e-5})
-            std::printf("  %9.2e", error_vs_cvode(mcc, triaxial(path, ocr, path_tolerance), name));
+            std::printf("  %9.2e", error_vs_cvode(mcc, triaxial(path, ocr, 20, path_tolerance), name));
           std::printf("\n");
         }
 }
