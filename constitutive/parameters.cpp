@@ -1,5 +1,7 @@
 #include "constitutive/parameters.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -145,6 +147,18 @@ std::string TableReader::choice(std::string_view key, std::span<const std::strin
     }
   }
   fail_value(key, "\"" + *value + "\"", "is not allowed (allowed: " + options + ")");
+}
+
+std::string TableReader::word(std::string_view key) const {
+  const toml::node* node = find(key);
+  if (!node) fail(key, "is missing (a name of letters, digits, '_' and '-')");
+  const std::optional<std::string> value = node->value_exact<std::string>();
+  const bool word = value && !value->empty() && std::all_of(value->begin(), value->end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '_' || c == '-';
+  });
+  if (!word) fail(key, "must be a name of letters, digits, '_' and '-' (it labels output rows)");
+  record(key, *value);
+  return *value;
 }
 
 std::string TableReader::choice_or(std::string_view key, std::string_view fallback,

@@ -72,6 +72,8 @@ class TableReader {
                         std::initializer_list<std::string_view> allowed) const {
     return choice_or(key, fallback, std::span(allowed.begin(), allowed.size()));
   }
+  /// A required name: a non-empty string of letters, digits, '_' and '-' (it labels output rows).
+  std::string word(std::string_view key) const;
   /// An optional array of distinct strings, each one of `allowed`; `fallback` when the key is absent.
   /// A non-array value, a non-string element, a name not in `allowed` or a repeated name is an error
   /// naming the file, the key and the allowed names. An empty array is allowed.

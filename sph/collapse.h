@@ -37,12 +37,11 @@ class Collapse {
         tuner, [](const Particles&, double) {}, [](double, std::size_t) {});
   }
 
-  /// Runout, height and repose angle of the soil now, and the runout where the deposit is a tenth
-  /// of the column's initial height thick (analysis/deposit.h).
+  /// Runout, height and repose angle of the soil now, and the runout where the deposit is
+  /// [deposit] toe_thickness thick, in the scene's [deposit] frame (analysis/deposit.h).
   DepositMetrics deposit() const {
-    return measure_deposit({particles_.x.data(), particles_.soil_count},
-                           {particles_.y.data(), particles_.soil_count}, scene_.geometry.column_width,
-                           scene_.geometry.particle_spacing, 0.1 * scene_.geometry.column_height);
+    return measure_deposit({particles_.x.data(), particles_.soil_count}, {particles_.y.data(), particles_.soil_count},
+                           scene_.deposit, scene_.geometry.particle_spacing);
   }
 
   const Particles& particles() const { return particles_; }

@@ -62,6 +62,7 @@ Particles build_particles(const Scene& scene) {
   for (std::size_t i = 0; i < soil.size(); ++i) {
     p.x[i] = soil[i].position.x;
     p.y[i] = soil[i].position.y;
+    p.x0[i] = p.x[i], p.y0[i] = p.y[i];
     p.layer[i] = static_cast<int>((g.height(soil[i].position) - lowest) / scene.output.layer_thickness);
   }
   for (std::size_t k = 0; k < ghosts.size(); ++k) {

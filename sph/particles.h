@@ -31,6 +31,7 @@ struct Particles {
   std::vector<double> ax, ay;              ///< acceleration (m/s²)
   std::vector<double> density_rate;        ///< Dρ/Dt, eq 11 (kg/m³/s)
   std::vector<double> lxx, lxy, lyx, lyy;  ///< velocity gradient ∂v^α/∂x^β, eq 23 (1/s)
+  std::vector<double> x0, y0;              ///< position at t = 0 (m), for displacements (gauges)
   std::vector<State> state;                ///< full 3×3 stress and hardening state
   std::vector<int> layer;                  ///< horizontal layer id from the bottom (for pictures)
 
@@ -89,6 +90,7 @@ struct Particles {
     f("sxx_rho2", p.sxx_rho2), f("syy_rho2", p.syy_rho2), f("sxy_rho2", p.sxy_rho2);
     f("ax", p.ax), f("ay", p.ay), f("density_rate", p.density_rate);
     f("lxx", p.lxx), f("lxy", p.lxy), f("lyx", p.lyx), f("lyy", p.lyy);
+    f("x0", p.x0), f("y0", p.y0);
   }
 };
 

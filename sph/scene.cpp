@@ -5,6 +5,7 @@
 #include "sph/geometry/column.h"
 #include "sph/geometry/read_layout.h"
 #include "sph/initial_state.h"
+#include "sph/read_measures.h"
 
 #include <algorithm>
 #include <memory>
@@ -191,6 +192,8 @@ OutputSettings read_output(const TableReader& t, double end_time) {
     o.fields.insert(*field_named(name));
   // A checkpoint costs about as much as a frame; every 0.1 s keeps what a killed run loses small.
   o.checkpoint_interval = t.number_or("checkpoint_interval", 0.1, Range::positive(), "s");
+  // Ten samples per frame: a sample costs about one step's acceleration, once in tens of steps.
+  o.history_interval = t.number_or("history_interval", 0.1 * o.frame_interval, Range::closed(0.0, end_time), "s");
   return o;
 }
 
@@ -239,14 +242,14 @@ std::size_t material_in_use(const Geometry& g, const Materials& m, const std::st
 }  // namespace
 
 Scene read_scene(const toml::table& root, const std::string& source) {
-  static constexpr std::string_view kTables[] = {"scene",   "initial", "material", "materials",
-                                                 "regions", "boundaries", "numerics", "output"};
+  static constexpr std::string_view kTables[] = {"scene",      "initial",  "material", "materials", "regions",
+                                                 "boundaries", "numerics", "output",   "deposit",   "gauges"};
   for (const auto& [key, node] : root) {
     const std::string_view name = key.str();
     if (std::find(std::begin(kTables), std::end(kTables), name) == std::end(kTables))
       throw ParameterError(source + ": [" + std::string(name) +
                            "] is not a known table (allowed: scene, initial, material, materials, regions, "
-                           "boundaries, numerics, output)");
+                           "boundaries, numerics, output, deposit, gauges)");
   }
   if (!root.get("scene")) throw ParameterError(source + ": no [scene] table");
   const Materials materials = material_tables(root, source);
@@ -256,6 +259,8 @@ Scene read_scene(const toml::table& root, const std::string& source) {
   const TableReader initial(section(root, source, "initial"), source, "initial");
   const TableReader numerics(section(root, source, "numerics"), source, "numerics");
   const TableReader output(section(root, source, "output"), source, "output");
+  const toml::table& deposit_table = section(root, source, "deposit");
+  const TableReader deposit(deposit_table, source, "deposit");
 
   Geometry geometry{};
   toml::table extra;  // what [scene] and the layout add to the scene as run beyond TableReader's keys
@@ -287,8 +292,14 @@ Scene read_scene(const toml::table& root, const std::string& source) {
                std::move(material),
                rest,
                {scene.number_or("max_run_hours", 24.0, Range::positive(), "h")},
+               {},
+               {},
                {}};
   for (const TableReader* t : {&scene, &initial, &numerics, &output}) t->reject_unknown_keys();
+  toml::table deposit_resolved;
+  toml::array gauges_resolved;
+  result.deposit = read_deposit(deposit, deposit_table, result.geometry, deposit_resolved);
+  result.gauges = read_gauges(root, source, gauges_resolved);
   // Every named material is read (validated) even if unused, so a typo in one is never silent.
   for (std::size_t k = 0; k < materials.tables.size(); ++k)
     if (k != used) (void)read_material(*materials.tables[k]);
@@ -306,6 +317,8 @@ Scene read_scene(const toml::table& root, const std::string& source) {
   }
   for (const char* key : {"regions", "boundaries"})
     if (const toml::node* v = extra.get(key)) result.resolved.insert(key, *v);
+  result.resolved.insert("deposit", std::move(deposit_resolved));
+  if (!gauges_resolved.empty()) result.resolved.insert("gauges", std::move(gauges_resolved));
   return result;
 }
 

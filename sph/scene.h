@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "constitutive/material.h"
+#include "sph/analysis/deposit.h"
+#include "sph/analysis/gauges.h"
 #include "sph/geometry/layout.h"
 #include "sph/output/frame.h"
 #include "sph/rest.h"
@@ -76,6 +78,7 @@ struct OutputSettings {
   double layer_thickness;  ///< m, thickness of the coloured horizontal layers
   FieldSet fields;         ///< fields written in every frame besides the positions (default: all)
   double checkpoint_interval;  ///< s of simulated time between checkpoints (DIR/checkpoint.h5)
+  double history_interval;     ///< s between samples of boundary_forces.csv and gauges.csv; 0: none
 };
 
 /// [scene] bounds on what a run may cost (sph/feasibility.h), for a user to lift deliberately.
@@ -96,6 +99,8 @@ struct Scene {
   /// The scene as read: every key with the value used, defaults included. Read back (read_scene),
   /// it gives the same scene; a run saves it as DIR/scene.toml and records it in summary.json.
   toml::table resolved;
+  DepositFrame deposit;       ///< [deposit]: where the deposit measures are taken from
+  std::vector<Gauge> gauges;  ///< [[gauges]]
 };
 
 /// Reads and validates a scene from a parsed TOML document; `source` names it in errors.

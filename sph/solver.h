@@ -21,6 +21,7 @@
 #include <exception>
 #include <functional>
 #include <limits>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -69,6 +70,16 @@ struct SolverSetup {
 SolverSetup make_solver_setup(const Scene& scene);
 
 /// Reusable work space of the loop (no allocation after the first step).
+/// The state inside a step at t^n, after the acceleration and before anything changes σ, v or the
+/// pairs: what the histories sample (output/history_writer.h; analysis/boundary_forces.h, gauges.h).
+struct StepSample {
+  double time;                               ///< t^n (s)
+  const Particles& particles;                ///< x^n, σ^n, v^{n−½}
+  const NeighbourList& neighbours;           ///< the pairs at x^n
+  const MomentumParams& momentum;            ///< the parameters of the acceleration just computed
+  std::span<const double> vx_next, vy_next;  ///< v^{n+½}
+};
+
 struct Workspace {
   NeighbourList neighbours;
   std::vector<double> vx_next, vy_next, density_next;  ///< v^{n+½}, ρ^{n+1} while a step computes them
@@ -84,6 +95,9 @@ struct Workspace {
   std::exception_ptr error;           ///< a failed neighbour search
   double energy_budget = std::numeric_limits<double>::infinity();  ///< J/m the kinetic energy may not exceed
   std::string blow_up;  ///< what the close of the last step found insane (blow_up.h); empty: nothing
+  std::function<void(const StepSample&)> sampler;  ///< called inside the steps that sample (RunControl)
+  bool sample_due = false;  ///< this step samples; changed only between steps (every thread reads it)
+  double sample_time = 0.0;  ///< t^n of the last sample
 
   Workspace(const SolverSetup& setup, const Particles& p)
       : vx_next(p.vx), vy_next(p.vy), density_next(p.density), volume(p.size()), sound_speed(setup.sound_speed) {}
@@ -173,6 +187,15 @@ void advance(const Model& model, const Model& fallback, const SolverSetup& setup
       p.ax[i] = a.x, p.ay[i] = a.y;
       work.vx_next[i] = p.vx[i] + kick_dt * a.x;
       work.vy_next[i] = p.vy[i] + kick_dt * a.y;
+    }
+    if (work.sample_due) {
+#pragma omp single
+      try {
+        work.sample_time = work.time;
+        work.sampler({work.time, p, nl, m, work.vx_next, work.vy_next});
+      } catch (...) {
+        work.error = std::current_exception();
+      }
     }
     // 3. Ghosts take v^{n+½}.
 #pragma omp for schedule(static)
@@ -292,6 +315,11 @@ struct RunControl {
   /// Continue from this state (the particles must hold the state saved with it): no frame at its
   /// time, which the run that saved it wrote if one was due.
   const LoopState* resume = nullptr;
+  /// Called (serially, inside the step) at the first step that starts at or after `first_sample` and
+  /// then at the first step starting at or after each later multiple of `sample_interval` (s).
+  std::function<void(const StepSample&)> on_sample;
+  double sample_interval = 0.0;
+  double first_sample = 0.0;
 };
 
 /// Runs to the end time, or until the soil is at rest if the scene asks for it, or until `control`
@@ -351,6 +379,14 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   };
   std::exception_ptr error;
   bool stop = false;
+  double next_sample = control.first_sample;
+  work.sampler = control.on_sample;
+  const auto schedule_sample = [&] {  // serial, before each step
+    if (!work.sampler) return;
+    if (work.sample_due)
+      next_sample = control.sample_interval * (std::floor(work.sample_time / control.sample_interval) + 1.0);
+    work.sample_due = clock.time() >= next_sample;
+  };
   if (!resume) on_frame(p, 0.0);
   double dt = clock.next_step(work.sound_speed, work.max_speed);
   if (!resume) stats.smallest_time_step = stats.largest_time_step = clock.cfl_step();
@@ -397,12 +433,14 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
       stats.smallest_time_step = std::min(stats.smallest_time_step, clock.cfl_step());
       stats.largest_time_step = std::max(stats.largest_time_step, clock.cfl_step());
       before_step();
+      schedule_sample();
     } catch (...) {
       error = std::current_exception();
       stop = true;
     }
   };
   before_step();
+  schedule_sample();
   // Chunks of about kChunkSeconds of wall time, each one parallel region with the tuner's count.
   constexpr double kChunkSeconds = 0.05;
   std::size_t chunk = 16;

@@ -20,6 +20,7 @@
 #include "sph/output/atomic_file.h"
 #include "sph/output/checkpoint.h"
 #include "sph/output/frame_writer.h"
+#include "sph/output/histories.h"
 #include "sph/output/progress.h"
 #include "sph/output/summary.h"
 
@@ -73,11 +74,13 @@ void check_resumable(const std::vector<std::string>& overrides) {
 }
 
 /// Files a previous run left in DIR that would describe it beside this run's frames: its summary,
-/// its checkpoint and the pictures scripts/plot_collapse.py draws.
+/// its checkpoint, its histories and the pictures scripts/plot_collapse.py draws.
 void remove_stale_results(const fs::path& dir) {
   std::error_code ignored;
   for (const char* name : {"summary.json", "summary.json.tmp", "checkpoint.h5", "checkpoint.h5.tmp",
-                           "frames.xdmf.tmp", "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png"})
+                           "frames.xdmf.tmp", "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png",
+                           sph::HistoryWriter::kBoundaryFile, sph::HistoryWriter::kGaugeFile, "boundary_forces.png",
+                           "gauges.png"})
     fs::remove(dir / name, ignored);
   if (fs::is_directory(dir, ignored))
     for (const auto& entry : fs::directory_iterator(dir, ignored)) {
@@ -109,6 +112,7 @@ sph::Summary describe(const sph::Scene& scene, const sph::Collapse& collapse, in
   s.version = kVersion;
   s.command_line = invocation();
   s.inputs_json = sph::scene_json(scene);
+  s.boundaries = scene.geometry.layout.walls;
   return s;
 }
 
@@ -160,6 +164,8 @@ void run_collapse(const CollapseOptions& o) {
                              std::to_string(estimate.soil_particles));
   const Particles& particles = collapse.particles();
   const SolverSetup& setup = collapse.setup();
+  std::optional<Histories> histories;  // checks the gauges before anything is written
+  if (scene.output.history_interval > 0.0) histories.emplace(scene, particles, setup.kernel);
   std::cout << (resumed ? dir.string() + " (resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s)"
                         : o.scene)
             << ": " << model_name(scene.material) << ", " << particles.soil_count << " soil + "
@@ -194,6 +200,12 @@ void run_collapse(const CollapseOptions& o) {
     write_checkpoint(dir / "checkpoint.h5", p, loop, scene_text);
   };
   if (resumed) control.resume = &resumed->loop;
+  if (histories) {
+    histories->open(dir, resumed ? resumed->loop.stats.end_time : -1.0);
+    control.on_sample = [&](const StepSample& s) { (*histories)(s); };
+    control.sample_interval = scene.output.history_interval;
+    control.first_sample = histories->first_sample();
+  }
   const auto on_frame = [&](const Particles& p, double t) { writer.write(buffers.view(p, t, scene.output.fields)); };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
   RunStatistics stats;

@@ -155,4 +155,19 @@ DepositMetrics measure_deposit(std::span<const double> x, std::span<const double
                               : std::numeric_limits<double>::quiet_NaN()};
 }
 
+DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, const DepositFrame& frame,
+                               double spacing) {
+  if (x.size() != y.size())
+    throw std::invalid_argument("measure_deposit: x and y must be of equal length (got " + std::to_string(x.size()) +
+                                " and " + std::to_string(y.size()) + ")");
+  std::vector<double> along(x.size()), height(x.size());
+  const double floor = dot(frame.up, frame.origin);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Vec2 p{x[i], y[i]};
+    along[i] = -dot(frame.direction, p);
+    height[i] = dot(frame.up, p) - floor;
+  }
+  return measure_deposit(along, height, -dot(frame.direction, frame.origin), spacing, frame.toe_thickness);
+}
+
 }  // namespace soilsph::sph

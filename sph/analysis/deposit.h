@@ -22,6 +22,8 @@
 ///   every shipped resolution resolves with at least two particles (docs/sph.md, Resolution).
 #include <span>
 
+#include "sph/geometry/vec2.h"
+
 namespace soilsph::sph {
 
 /// Runout, height and repose angle of a deposit (SI, degrees).
@@ -35,10 +37,27 @@ inline constexpr double deposit_link_spacings = 2.0;
 /// Height band of the surface points the repose angle is fitted on, as fractions of the height.
 inline constexpr double repose_band_low = 0.1, repose_band_high = 0.9;
 
+/// Where a scene's deposit is measured from ([deposit], docs/scenes.md): runout grows along the unit
+/// `direction` from `origin`, height along `up` (the unit normal of `direction` against gravity) above
+/// the origin, and the repose angle is the surface's slope in that frame. The column's frame is
+/// origin (W, 0), direction (−1, 0), up (0, 1): the definitions above, to the bit.
+struct DepositFrame {
+  Vec2 origin;
+  Vec2 direction{-1.0, 0.0};
+  Vec2 up{0.0, 1.0};
+  double toe_thickness = 0.0;  ///< t of runout_thick_m (m); 0: not measured
+};
+
 /// x, y of the soil particles; fixed_wall_x = W; spacing = initial particle spacing (for robust
 /// measures that ignore isolated, splashed particles); toe_thickness t for runout_thick_m (0: not
 /// measured). Throws std::invalid_argument on empty or mismatched input or a non-positive spacing.
 DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, double fixed_wall_x,
                                double spacing, double toe_thickness = 0.0);
+
+/// The same in `frame`: the particles are taken to the coordinates (−direction·x, up·(x − origin)),
+/// in which the frame's origin is a fixed wall at −direction·origin on the floor y = 0. The rotation
+/// alone (no shift along the flow) keeps the column's numbers bit-identical.
+DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, const DepositFrame& frame,
+                               double spacing);
 
 }  // namespace soilsph::sph

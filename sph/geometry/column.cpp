@@ -21,11 +21,11 @@ Layout column_layout(const ColumnKeys& c, const std::string& material) {
   // The strips are given, not derived from the surfaces, so that each ghost is computed by the same
   // operations as before the layout existed (bit-identical runs): the floor's rows from under the
   // fixed wall's last layer (x = W + layers Δp) leftwards, the walls' rows upwards from y = 0.
-  Wall floor{{{W - c.floor_length - half, -half}, {W + half, -half}}, WallKind::NoSlip, 0.0, {}, "[scene] floor", {}};
+  Wall floor{{{W - c.floor_length - half, -half}, {W + half, -half}}, WallKind::NoSlip, 0.0, {}, "[scene] floor", {}, "floor"};
   floor.strips = {{{W + c.layers * dx, 0.0}, {-1.0, 0.0}, {0.0, -1.0}, lattice_count(c.floor_length, dx) + c.layers}};
-  Wall fixed{{{W + half, -half}, {W + half, top + half}}, WallKind::FreeSlip, 0.0, {}, "[scene] fixed wall", {}};
+  Wall fixed{{{W + half, -half}, {W + half, top + half}}, WallKind::FreeSlip, 0.0, {}, "[scene] fixed wall", {}, "fixed_wall"};
   fixed.strips = {{{W, 0.0}, {0.0, 1.0}, {1.0, 0.0}, rows}};
-  Wall removable{{{-half, top + half}, {-half, -half}}, WallKind::FreeSlip, 0.0, {}, "[scene] removable wall", {}};
+  Wall removable{{{-half, top + half}, {-half, -half}}, WallKind::FreeSlip, 0.0, {}, "[scene] removable wall", {}, "removable_wall"};
   removable.strips = {{{0.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}, rows}};
   if (c.left_wall_withdrawn) removable.motion.removed_at = 0.0;
   if (c.lift_speed > 0.0) {

@@ -65,6 +65,9 @@ struct Wall {
   /// W + kΔp, not (W + Δp/2) − Δp/2 + kΔp, so that the column stays bit-identical); otherwise
   /// computed from the points (geometry/lattice.h).
   std::vector<GhostStrip> strips;
+  /// Its name in the run's histories (boundary_forces.csv): [[boundaries]] name, by default
+  /// "boundary_K" for the K-th table; the column's are "floor", "fixed_wall" and "removable_wall".
+  std::string label;
 };
 
 struct Layout {

@@ -14,7 +14,8 @@ namespace {
 
 toml::array as_array(Vec2 v) { return toml::array{v.x, v.y}; }
 
-/// The tables of an array of tables `name` (empty if absent), with "[[name]] #k" for messages.
+}  // namespace
+
 std::vector<std::pair<const toml::table*, std::string>> tables_of(const toml::table& root, const std::string& source,
                                                                   std::string_view name) {
   std::vector<std::pair<const toml::table*, std::string>> tables;
@@ -29,8 +30,6 @@ std::vector<std::pair<const toml::table*, std::string>> tables_of(const toml::ta
   }
   return tables;
 }
-
-}  // namespace
 
 Vec2 read_vector(const toml::node& node, const std::string& where, std::string_view unit) {
   const toml::array* a = node.as_array();
@@ -128,6 +127,7 @@ Wall read_wall(const toml::table& table, const std::string& label, const std::st
   const std::string where = source + ": [" + label + "]";
   Wall wall;
   wall.name = "[" + label + "]";
+  if (t.has("name")) wall.label = t.word("name");
   t.accept({"points", "velocity"});
   wall.points = points_of(table, where, 2);
   for (std::size_t k = 0; k + 1 < wall.points.size(); ++k) {
@@ -169,9 +169,18 @@ Wall read_wall(const toml::table& table, const std::string& label, const std::st
 
 toml::array read_boundaries(const toml::table& root, const std::string& source, std::vector<Wall>& walls) {
   toml::array resolved;
+  int k = 0;
   for (const auto& [table, label] : tables_of(root, source, "boundaries")) {
     toml::table r;
-    walls.push_back(read_wall(*table, label, source, r));
+    Wall wall = read_wall(*table, label, source, r);
+    if (wall.label.empty()) wall.label = "boundary_" + std::to_string(++k);
+    else ++k;
+    for (const Wall& other : walls)
+      if (other.label == wall.label)
+        throw ParameterError(source + ": " + wall.name + " name = \"" + wall.label + "\" is also the name of " +
+                             other.name + " (boundary names must differ: they label boundary_forces.csv)");
+    r.insert("name", wall.label);
+    walls.push_back(std::move(wall));
     resolved.push_back(std::move(r));
   }
   return resolved;

@@ -3,6 +3,8 @@
 /// Reads [[regions]] and [[boundaries]] (docs/scenes.md): every key validated, each error naming the
 /// file, the table (e.g. "[[boundaries]] #2") and the key.
 #include <string>
+#include <utility>
+#include <vector>
 #include <toml++/toml.h>
 
 #include "sph/geometry/layout.h"
@@ -21,6 +23,11 @@ ReadLayout read_layout(const toml::table& root, const std::string& source, doubl
 
 /// The boundaries alone (a column scene may add walls, e.g. a gate, to those of its shorthand).
 toml::array read_boundaries(const toml::table& root, const std::string& source, std::vector<Wall>& walls);
+
+/// The tables of the array of tables `name` in `root` (empty if absent), each with its label
+/// "name #k" for messages; throws ParameterError if `name` is not an array of tables.
+std::vector<std::pair<const toml::table*, std::string>> tables_of(const toml::table& root, const std::string& source,
+                                                                  std::string_view name);
 
 /// An [x, y] pair of finite numbers (m or m/s) at `where`; throws ParameterError otherwise.
 Vec2 read_vector(const toml::node& node, const std::string& where, std::string_view unit);

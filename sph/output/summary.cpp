@@ -67,6 +67,31 @@ std::string indented(const std::string& json) {
   return out;
 }
 
+/// The walls as a JSON array: name, kind, points, and when present the time it is removed and its
+/// velocity with the interval it moves in.
+std::string boundaries_json(const std::vector<Wall>& walls) {
+  static constexpr const char* kKinds[] = {"free-slip", "no-slip", "frictional"};
+  const auto pair = [](Vec2 v) { return "[" + number(v.x) + ", " + number(v.y) + "]"; };
+  std::string out = "[";
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const Wall& w = walls[k];
+    out += k ? ",\n    {" : "\n    {";
+    out += quoted("name") + ": " + quoted(w.label) + ", " + quoted("kind") + ": " +
+           quoted(kKinds[static_cast<int>(w.kind)]) + ", " + quoted("points") + ": [";
+    for (std::size_t i = 0; i < w.points.size(); ++i) {
+      if (i) out += ", ";
+      out += pair(w.points[i]);
+    }
+    out += "]";
+    if (std::isfinite(w.motion.removed_at)) out += ", " + quoted("removed_at") + ": " + number(w.motion.removed_at);
+    if (w.motion.moves())
+      out += ", " + quoted("velocity") + ": " + pair(w.motion.velocity) + ", " + quoted("start") + ": " +
+             number(w.motion.start) + ", " + quoted("end") + ": " + number(w.motion.end);
+    out += "}";
+  }
+  return out + (walls.empty() ? "]" : "\n  ]");
+}
+
 }  // namespace
 
 std::string summary_json(const Summary& s) {
@@ -106,6 +131,8 @@ std::string summary_json(const Summary& s) {
   field("version", quoted(s.version));
   field("command_line", quoted(s.command_line));
   if (!s.inputs_json.empty()) field("inputs", indented(s.inputs_json));
+  // Nested values come last, after the flat figures (readers that scan the figures stop at "inputs").
+  if (!s.boundaries.empty()) field("boundaries", boundaries_json(s.boundaries));
   return out + "\n}\n";
 }
 

@@ -5,6 +5,9 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include "sph/geometry/layout.h"
 
 namespace soilsph::sph {
 
@@ -30,6 +33,7 @@ struct Summary {
   std::string command_line;  ///< as typed, shell-quoted
   std::string inputs_json;   ///< the scene as run (Scene::resolved) as a JSON object, or empty
   double resumed_from = -1;  ///< time of the checkpoint this run resumed from (s); < 0: none
+  std::vector<Wall> boundaries;  ///< the scene's walls: label, kind, points and motion (pictures draw them)
 };
 
 /// Writes the summary as one JSON object (numbers in shortest round-trip form, non-finite

@@ -36,37 +36,69 @@ inline void set_stress_over_density2(Particles& p, std::size_t i) {
   p.sxy_rho2[i] = p.sxy[i] * inv_rho2;
 }
 
-/// a_i of soil particle i from the current σ/ρ² (set_stress_over_density2), artificial stress,
-/// density and velocity (p.vx, p.vy).
-inline Acceleration acceleration_of(const Particles& p, const NeighbourList& nl, const MomentumParams& m,
-                                    std::size_t i) {
-  const double h = m.smoothing_length, eta2 = 0.01 * h * h;
-  const bool art = m.artificial_stress.enabled;
-  const double inv_w_dp = 1.0 / m.artificial_stress.w_at_spacing, n_exp = m.artificial_stress.exponent;
-  const double sxx_i = p.sxx_rho2[i], syy_i = p.syy_rho2[i], sxy_i = p.sxy_rho2[i];
-  const bool has_tension_i = p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
-  double ax = 0.0, ay = 0.0;
-  nl.for_each_pair(i, [&](const NeighbourList::Pair& q) {
-    const std::size_t j = q.j;
-    double txx = sxx_i + p.sxx_rho2[j];
-    double tyy = syy_i + p.syy_rho2[j];
-    double txy = sxy_i + p.sxy_rho2[j];
+/// The pair terms of eq 12 for one particle i: what neighbour j contributes to a_i through the pair
+/// q (m/s²), from the current σ/ρ² (set_stress_over_density2), artificial stress, density and
+/// velocity (p.vx, p.vy). One definition for the step's sum (acceleration_of) and for the force each
+/// wall's ghosts exert (analysis/boundary_forces.h).
+class PairAcceleration {
+ public:
+  PairAcceleration(const Particles& p, const MomentumParams& m, std::size_t i)
+      : p_(p),
+        m_(m),
+        i_(i),
+        h_(m.smoothing_length),
+        eta2_(0.01 * h_ * h_),
+        art_(m.artificial_stress.enabled),
+        inv_w_dp_(1.0 / m.artificial_stress.w_at_spacing),
+        n_exp_(m.artificial_stress.exponent),
+        sxx_i_(p.sxx_rho2[i]),
+        syy_i_(p.syy_rho2[i]),
+        sxy_i_(p.sxy_rho2[i]),
+        has_tension_i_(p.rxx[i] != 0.0 || p.ryy[i] != 0.0) {}
+
+  Acceleration operator()(const NeighbourList::Pair& q) const {
+    const Particles& p = p_;
+    const std::size_t i = i_, j = q.j;
+    double txx = sxx_i_ + p.sxx_rho2[j];
+    double tyy = syy_i_ + p.syy_rho2[j];
+    double txy = sxy_i_ + p.sxy_rho2[j];
     const double v_dot_r = (p.vx[i] - p.vx[j]) * q.rx + (p.vy[i] - p.vy[j]) * q.ry;
     if (v_dot_r < 0.0) {  // eq 37: only approaching pairs
-      const double phi = h * v_dot_r / (q.rx * q.rx + q.ry * q.ry + eta2);
-      const double pi = (-m.viscosity_alpha * m.sound_speed * phi + m.viscosity_beta * phi * phi) /
+      const double phi = h_ * v_dot_r / (q.rx * q.rx + q.ry * q.ry + eta2_);
+      const double pi = (-m_.viscosity_alpha * m_.sound_speed * phi + m_.viscosity_beta * phi * phi) /
                         (0.5 * (p.density[i] + p.density[j]));
       txx -= pi;
       tyy -= pi;
     }
-    if (art && (has_tension_i || p.rxx[j] != 0.0 || p.ryy[j] != 0.0)) {  // R = 0 without tension
-      const double f = std::pow(q.w * inv_w_dp, n_exp);
+    if (art_ && (has_tension_i_ || p.rxx[j] != 0.0 || p.ryy[j] != 0.0)) {  // R = 0 without tension
+      const double f = std::pow(q.w * inv_w_dp_, n_exp_);
       txx += f * (p.rxx[i] + p.rxx[j]);
       tyy += f * (p.ryy[i] + p.ryy[j]);
       txy += f * (p.rxy[i] + p.rxy[j]);
     }
-    ax += p.mass[j] * (txx * q.gx + txy * q.gy);
-    ay += p.mass[j] * (txy * q.gx + tyy * q.gy);
+    return {p.mass[j] * (txx * q.gx + txy * q.gy), p.mass[j] * (txy * q.gx + tyy * q.gy)};
+  }
+
+ private:
+  const Particles& p_;
+  const MomentumParams& m_;
+  std::size_t i_;
+  double h_, eta2_;
+  bool art_;
+  double inv_w_dp_, n_exp_;
+  double sxx_i_, syy_i_, sxy_i_;
+  bool has_tension_i_;
+};
+
+/// a_i of soil particle i: the pair terms of every neighbour (soil and ghost) and gravity.
+inline Acceleration acceleration_of(const Particles& p, const NeighbourList& nl, const MomentumParams& m,
+                                    std::size_t i) {
+  const PairAcceleration term(p, m, i);
+  double ax = 0.0, ay = 0.0;
+  nl.for_each_pair(i, [&](const NeighbourList::Pair& q) {
+    const Acceleration a = term(q);
+    ax += a.x;
+    ay += a.y;
   });
   return {ax + m.gravity.x, ay + m.gravity.y};
 }

@@ -207,3 +207,40 @@ TEST_CASE("runout_thick_m: the toe where the deposit reaches the given thickness
   CHECK(measure_deposit(deposit.x, deposit.y, kWall, kSpacing, kSpacing).runout_thick_m ==
         Approx(0.050).epsilon(1e-12));
 }
+
+TEST_CASE("a deposit measured in a mirrored or turned frame gives the column frame's measures", "[deposit][frame]") {
+  // A 30° slope of 25 columns against the wall, measured as the column is ([deposit] defaults) ...
+  Particles slope;
+  const double tan30 = std::tan(std::numbers::pi / 6.0);
+  slope.add_profile(25, [&](double px) { return 0.002 + tan30 * (px - (kWall - 24 * kSpacing)); });
+  const soilsph::sph::DepositFrame column{{kWall, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, 0.004};
+  const auto reference = measure_deposit(slope.x, slope.y, column, kSpacing);
+  // ... is the same deposit, to the bit, in the column's frame through the frame overload
+  const auto plain = measure_deposit(slope.x, slope.y, kWall, kSpacing, 0.004);
+  CHECK(reference.runout_m == plain.runout_m);
+  CHECK(reference.height_m == plain.height_m);
+  CHECK(reference.repose_angle_deg == plain.repose_angle_deg);
+  CHECK(reference.runout_thick_m == plain.runout_thick_m);
+
+  SECTION("mirrored: flowing towards +x from a wall at x = -W, on a floor 0.5 m up") {
+    std::vector<double> x(slope.x.size()), y(slope.y.size());
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = -slope.x[i], y[i] = slope.y[i] + 0.5;
+    const auto m = measure_deposit(x, y, {{-kWall, 0.5}, {1.0, 0.0}, {0.0, 1.0}, 0.004}, kSpacing);
+    CHECK(m.runout_m == Approx(reference.runout_m).epsilon(1e-12));
+    CHECK(m.height_m == Approx(reference.height_m).epsilon(1e-9));
+    CHECK(m.repose_angle_deg == Approx(reference.repose_angle_deg).epsilon(1e-9));
+    CHECK(m.runout_thick_m == Approx(reference.runout_thick_m).epsilon(1e-12));
+  }
+  SECTION("turned by 40 degrees about the origin with its gravity (an inclined chute's frame)") {
+    const double c = std::cos(0.7), s = std::sin(0.7);
+    std::vector<double> x(slope.x.size()), y(slope.y.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      x[i] = c * slope.x[i] - s * slope.y[i], y[i] = s * slope.x[i] + c * slope.y[i];
+    const soilsph::sph::DepositFrame turned{{c * kWall, s * kWall}, {-c, -s}, {-s, c}, 0.004};
+    const auto m = measure_deposit(x, y, turned, kSpacing);
+    CHECK(m.runout_m == Approx(reference.runout_m).epsilon(1e-9));
+    CHECK(m.height_m == Approx(reference.height_m).epsilon(1e-9));
+    CHECK(m.repose_angle_deg == Approx(reference.repose_angle_deg).epsilon(1e-6));
+    CHECK(m.runout_thick_m == Approx(reference.runout_thick_m).epsilon(1e-9));
+  }
+}

@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// Reads what a scene measures (docs/scenes.md): [deposit], the frame of the deposit measures, and
+/// [[gauges]], the points sampled over time; every key validated, each error naming the file, the
+/// table and the key.
+#include <string>
+#include <toml++/toml.h>
+#include <vector>
+
+#include "constitutive/parameters.h"
+#include "sph/analysis/deposit.h"
+#include "sph/analysis/gauges.h"
+
+namespace soilsph::sph {
+
+struct Geometry;
+
+/// [deposit] origin, direction, toe_thickness; the defaults are the column's measures: from
+/// (column_width, 0) along −x (in general across gravity, a quarter turn clockwise from it), toe
+/// thickness a tenth of the soil's height. `resolved` gets the
+/// table as read, defaults included.
+DepositFrame read_deposit(const TableReader& t, const toml::table& table, const Geometry& g, toml::table& resolved);
+
+/// [[gauges]] name, position, kind; `resolved` gets each as read, defaults included.
+std::vector<Gauge> read_gauges(const toml::table& root, const std::string& source, toml::array& resolved);
+
+}  // namespace soilsph::sph
