@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Pictures of an SPH soil-column collapse run (Debian's /usr/bin/python3: matplotlib, h5py, numpy).
+"""Pictures of an SPH collapse run of any scene (Debian's /usr/bin/python3: matplotlib, h5py, numpy).
 
     plot_collapse.py DIR [--compare DIR2 ...]
 
@@ -11,7 +11,14 @@ reads DIR/frames.h5 and DIR/summary.json (docs/sph-output.md) and writes
   DIR/profiles.png                        with --compare: final surface profiles of DIR and DIR2 ...
                                           (labels: summary.json's model; a triangle marks the toe
                                           that summary.json's runout_m measures)
-Axes are in cm with equal aspect and a 2 cm x 2 cm background grid as in the paper.
+  DIR/compare_velocity.png                with --compare: the snapshots of every run, one row each,
+                                          on one colour scale
+  DIR/boundary_forces.png                 the force on each boundary over time (boundary_forces.csv)
+  DIR/gauges.png                          p, q, speed and displacement of each gauge over time
+                                          (gauges.csv)
+Axes are in cm with equal aspect and a 2 cm x 2 cm background grid as in the paper. The walls are
+drawn from summary.json's "boundaries" where they stand at each picture's time (a removed wall
+disappears, a moving one moves); the extent is that of the particles of the frames drawn.
 The velocity pictures need the field `velocity` or `speed` and deposit.png needs `layer` ([output]
 fields of the scene): if a run lacks one, the script says which field is missing and skips that picture.
 """
@@ -31,6 +38,8 @@ SNAPSHOT_TIMES = (0.05, 0.10, 0.15, 0.20)
 LAYER_COLOURS = ("#d9b77e", "#7a5230")  # alternating layers: light and dark sand
 GRID_CM = 2.0
 CM = 100.0  # metres -> centimetres
+MODEL_NAMES = {"drucker-prager": "Drucker–Prager", "modified-cam-clay": "Modified Cam-Clay",
+               "mohr-coulomb": "Mohr–Coulomb", "linear-elastic": "linear elastic"}
 
 
 class Run:
@@ -47,7 +56,8 @@ class Run:
         self.times = np.array([float(self.h5[name].attrs["time"]) for name in self.names])
         summary_file = self.dir / "summary.json"
         self.summary = json.loads(summary_file.read_text()) if summary_file.exists() else {}
-        self.label = self.summary.get("model") or self.dir.name
+        model = self.summary.get("model")
+        self.label = MODEL_NAMES.get(model, model) if model else self.dir.name
         # A run that did not finish is said so on every picture, and its figures are not quoted
         # (summary.json "complete" and "stop_reason"; docs/sph-output.md, Run records).
         self.complete = self.summary.get("complete") is True
@@ -105,7 +115,7 @@ def extent(frames, spacing):
 
 
 def prepare_axes(ax, limits, walls):
-    """Equal aspect, cm axes, the paper's 2 cm background grid, floor and fixed wall drawn."""
+    """Equal aspect, cm axes, the paper's 2 cm background grid, the walls (polylines in cm) drawn."""
     ax.set_xlim(limits[0], limits[1])
     ax.set_ylim(limits[2], limits[3])
     ax.set_aspect("equal")
@@ -115,9 +125,8 @@ def prepare_axes(ax, limits, walls):
     ax.set_axisbelow(True)
     ax.set_xlabel("x (cm)")
     ax.set_ylabel("y (cm)")
-    floor_y, wall_x = walls
-    ax.axhline(floor_y, color="black", linewidth=1.5, zorder=3)
-    ax.plot([wall_x, wall_x], [floor_y, limits[3]], color="black", linewidth=2.5, zorder=3)
+    for x, y in walls:
+        ax.plot(x, y, color="black", linewidth=2.0, zorder=3, solid_capstyle="butt")
 
 
 def marker_area(ax, spacing):
@@ -129,14 +138,29 @@ def marker_area(ax, spacing):
     return max(side_points, 0.5) ** 2
 
 
-def walls(run):
-    """Floor and fixed-wall lines (cm): half a spacing beyond the initial particle centres."""
-    first = run.frame(0)
-    return ((first["y"].min() - 0.5 * run.spacing) * CM, (first["x"].max() + 0.5 * run.spacing) * CM)
+def walls(run, time=0.0):
+    """The walls standing at `time` as (x, y) polylines in cm, from summary.json's "boundaries"; for a
+    summary without them (older runs), the column's floor and fixed wall half a spacing beyond the
+    initial particle centres."""
+    boundaries = run.summary.get("boundaries")
+    if boundaries is None:
+        first = run.frame(0)
+        floor, wall = (first["y"].min() - 0.5 * run.spacing) * CM, (first["x"].max() + 0.5 * run.spacing) * CM
+        return [(np.array([-1e3, wall]), np.array([floor, floor])), (np.array([wall, wall]), np.array([floor, 1e3]))]
+    lines = []
+    for b in boundaries:
+        if b.get("removed_at") is not None and time >= b["removed_at"]:
+            continue
+        points = np.array(b["points"], dtype=float)
+        if "velocity" in b:  # moved by its velocity during [start, end]
+            moved = min(max(time, b["start"]), b["end"]) - b["start"]
+            points = points + moved * np.array(b["velocity"], dtype=float)
+        lines.append((points[:, 0] * CM, points[:, 1] * CM))
+    return lines
 
 
 def draw_speed(ax, run, frame, limits, vmax):
-    prepare_axes(ax, limits, walls(run))
+    prepare_axes(ax, limits, walls(run, frame["time"]))
     order = np.argsort(frame["speed"])  # fast particles on top
     return ax.scatter(frame["x"][order] * CM, frame["y"][order] * CM, c=frame["speed"][order], cmap="turbo",
                       vmin=0.0, vmax=vmax, marker="s", s=marker_area(ax, run.spacing), linewidths=0,
@@ -173,7 +197,7 @@ def plot_deposit(run):
     final = run.frame(len(run.names) - 1)
     limits = extent([run.frame(0), final], run.spacing)
     fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
-    prepare_axes(ax, limits, walls(run))
+    prepare_axes(ax, limits, walls(run, final["time"]))
     colours = np.array(LAYER_COLOURS)[final["layer"] % 2]
     ax.scatter(final["x"] * CM, final["y"] * CM, c=colours, marker="s", s=marker_area(ax, run.spacing),
                linewidths=0, zorder=2)
@@ -197,12 +221,90 @@ def surface_profile(frame, spacing):
     return np.r_[frame["x"][top[0]], frame["x"][top]] * CM, np.r_[frame["y"].min(), frame["y"][top]] * CM
 
 
+def deposit_frame(run):
+    """Origin and unit direction of the deposit measures ([deposit] of the scene as run; the
+    column's by default: from the initial right edge along -x)."""
+    deposit = run.summary.get("inputs", {}).get("deposit", {})
+    origin = deposit.get("origin", [run.frame(0)["x"].max(), 0.0])
+    return origin, deposit.get("direction", [-1.0, 0.0])
+
+
+def plot_compare_velocity(runs):
+    """The snapshots of every run side by side, one row per run, one colour scale for all."""
+    rows = []
+    for run in runs:
+        indices = [run.nearest(t) for t in SNAPSHOT_TIMES]
+        if run.lacks(("velocity", "speed"), indices, "compare_velocity.png"):
+            return
+        rows.append([run.frame(i) for i in indices])
+    limits = extent([f for row in rows for f in row] + [run.frame(0) for run in runs], runs[0].spacing)
+    vmax = max(max(float(f["speed"].max()) for f in row) for row in rows)
+    fig, axes = plt.subplots(len(runs), len(SNAPSHOT_TIMES), figsize=(4.2 * len(SNAPSHOT_TIMES), 2.6 * len(runs)),
+                             dpi=150, constrained_layout=True, squeeze=False)
+    for r, (run, row) in enumerate(zip(runs, rows)):
+        for c, frame in enumerate(row):
+            points = draw_speed(axes[r, c], run, frame, limits, max(vmax, 1e-12))
+            axes[r, c].set_title(f"{run.label}, t = {frame['time']:.3f} s", fontsize=9)
+    fig.colorbar(points, ax=axes, shrink=0.8, label="velocity magnitude (m/s)")
+    fig.savefig(runs[0].dir / "compare_velocity.png")
+    plt.close(fig)
+
+
+def read_history(path):
+    """A history CSV (docs/sph-output.md) as {name: {column: array}}, rows grouped by their second
+    column (the boundary or gauge)."""
+    with open(path) as f:
+        lines = [line.rstrip("\n") for line in f if line.strip() and not line.startswith("#")]
+    header, rows = lines[0].split(","), [line.split(",") for line in lines[1:]]
+    rows = [r for r in rows if len(r) == len(header)]  # a torn last row of a killed run
+    series = {}
+    for r in rows:
+        entry = series.setdefault(r[1], {key: [] for key in header if key != header[1]})
+        for key, value in zip(header, r):
+            if key != header[1]:
+                entry[key].append(float(value))
+    return {name: {key: np.array(v) for key, v in columns.items()} for name, columns in series.items()}
+
+
+def plot_histories(run):
+    forces_file, gauges_file = run.dir / "boundary_forces.csv", run.dir / "gauges.csv"
+    if forces_file.is_file():
+        series = read_history(forces_file)
+        fig, axes = plt.subplots(2, 1, figsize=(8, 6), dpi=150, sharex=True, constrained_layout=True)
+        for name, s in series.items():
+            axes[0].plot(s["time_s"], s["fx_N_per_m"], label=name)
+            axes[1].plot(s["time_s"], s["fy_N_per_m"], label=name)
+        axes[0].set_ylabel("$F_x$ (N/m)")
+        axes[1].set_ylabel("$F_y$ (N/m)")
+        axes[1].set_xlabel("t (s)")
+        axes[0].legend(fontsize=8)
+        axes[0].set_title(f"{run.label}: force of the soil on each boundary (per metre of thickness)")
+        fig.savefig(run.dir / "boundary_forces.png")
+        plt.close(fig)
+    if gauges_file.is_file():
+        series = read_history(gauges_file)
+        fig, axes = plt.subplots(2, 2, figsize=(11, 6.5), dpi=150, sharex=True, constrained_layout=True)
+        for name, s in series.items():
+            axes[0, 0].plot(s["time_s"], s["p_Pa"] / 1e3, label=name)
+            axes[0, 1].plot(s["time_s"], s["q_Pa"] / 1e3, label=name)
+            axes[1, 0].plot(s["time_s"], np.hypot(s["vx_m_per_s"], s["vy_m_per_s"]), label=name)
+            axes[1, 1].plot(s["time_s"], np.hypot(s["ux_m"], s["uy_m"]) * CM, label=name)
+        for ax, label in zip(axes.flat, ("p (kPa, compression +)", "q (kPa)", "speed (m/s)", "displacement (cm)")):
+            ax.set_ylabel(label)
+        for ax in axes[1]:
+            ax.set_xlabel("t (s)")
+        axes[0, 0].legend(fontsize=8)
+        fig.suptitle(f"{run.label}: gauges")
+        fig.savefig(run.dir / "gauges.png")
+        plt.close(fig)
+
+
 def plot_profiles(runs):
     first = runs[0]
     finals = [run.frame(len(run.names) - 1) for run in runs]
     limits = extent(finals + [first.frame(0)], first.spacing)
     fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
-    prepare_axes(ax, limits, walls(first))
+    prepare_axes(ax, limits, walls(first, finals[0]["time"]))
     initial = first.frame(0)
     x, y = surface_profile(initial, first.spacing)
     ax.plot(x, y, color="0.5", linestyle="--", label="initial column")
@@ -211,8 +313,9 @@ def plot_profiles(runs):
         label = f"{run.label}, dx = {run.spacing * 1e3:g} mm (t = {final['time']:.2f} s)"
         line, = ax.plot(x, y, linewidth=1.8, label=label)
         runout = run.summary.get("runout_m")
-        if run.complete and isinstance(runout, (int, float)):  # the toe the runout measures, from the initial right edge
-            toe = (run.frame(0)["x"].max() - runout) * CM
+        if run.complete and isinstance(runout, (int, float)):  # the toe the runout measures
+            origin, direction = deposit_frame(run)
+            toe = (origin[0] + runout * direction[0]) * CM
             ax.plot([toe], [limits[2]], marker="^", markersize=9, color=line.get_color(), clip_on=False,
                     zorder=4)
     ax.set_title("final surface profiles (▲: toe of the measured runout)")
@@ -231,8 +334,11 @@ def main():
     run = Run(args.dir)
     plot_velocity(run)
     plot_deposit(run)
+    plot_histories(run)
     if args.compare:
-        plot_profiles([run] + [Run(d) for d in args.compare])
+        runs = [run] + [Run(d) for d in args.compare]
+        plot_profiles(runs)
+        plot_compare_velocity(runs)
     written = sorted(p.name for p in run.dir.glob("*.png"))
     print(f"plot_collapse: wrote {', '.join(written) or 'no picture'} in {run.dir}")
 

@@ -9,7 +9,7 @@ import matplotlib.image as mpimg
 
 script, run, other = sys.argv[1], pathlib.Path(sys.argv[2]), sys.argv[3]
 expected = [f"velocity_t{t}.png" for t in ("0.05", "0.10", "0.15", "0.20")]
-expected += ["velocity.png", "deposit.png", "profiles.png"]
+expected += ["velocity.png", "deposit.png", "profiles.png", "compare_velocity.png"]
 for name in expected:
     (run / name).unlink(missing_ok=True)  # so that a stale picture cannot pass
 
