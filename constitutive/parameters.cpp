@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -232,12 +233,43 @@ void apply_override(toml::table& root, std::string_view assignment) {
   if (eq == std::string_view::npos || dot == std::string_view::npos || dot > eq) {
     throw ParameterError("--set " + std::string(assignment) + ": expected section.key=value");
   }
-  const std::string section(assignment.substr(0, dot));
-  const std::string key(assignment.substr(dot + 1, eq - dot - 1));
-  const std::string text(assignment.substr(eq + 1));
-  if (!root.contains(section)) root.insert_or_assign(section, toml::table{});
-  toml::table* table = root[section].as_table();
-  if (!table) throw ParameterError("--set " + std::string(assignment) + ": [" + section + "] is not a table");
+  const std::string option = "--set " + std::string(assignment);
+  // The key path: tables by name and the entries of an array of tables ([[regions]], ...) by their
+  // number from 1, as messages label them ("[regions #2]"); the last name is the key set. A table
+  // named on the way that does not exist is created.
+  std::vector<std::string> path;
+  for (std::size_t from = 0; from < eq;) {
+    const std::size_t to = std::min(assignment.find('.', from), eq);
+    path.emplace_back(assignment.substr(from, to - from));
+    if (path.back().empty()) throw ParameterError(option + ": an empty name in the key path");
+    from = to + 1;
+  }
+  const std::string key = path.back();
+  path.pop_back();
+  const std::string dotted(assignment.substr(0, eq)), text(assignment.substr(eq + 1));
+  toml::node* node = &root;
+  std::string where;
+  for (const std::string& name : path) {
+    if (toml::array* array = node->as_array()) {
+      std::size_t k = 0;
+      const auto [end, ec] = std::from_chars(name.data(), name.data() + name.size(), k);
+      if (ec != std::errc() || end != name.data() + name.size() || k < 1 || k > array->size())
+        throw ParameterError(option + ": [[" + where + "]] has " + std::to_string(array->size()) +
+                             " entries; name one by its number from 1 (" + where + ".1." + key + "=...)");
+      node = &(*array)[k - 1];
+      where += " #" + name;
+    } else {
+      toml::table& table = *node->as_table();
+      node = table.get(name);
+      if (!node) node = &table.insert_or_assign(name, toml::table{}).first->second;
+      where += (where.empty() ? "" : ".") + name;
+    }
+    if (!node->is_table() && !node->is_array()) throw ParameterError(option + ": [" + where + "] is not a table");
+  }
+  toml::table* table = node->as_table();
+  if (!table)
+    throw ParameterError(option + ": [[" + where + "]] is an array of tables; name an entry by its number from 1 (" +
+                         where + ".1." + key + "=...)");
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + text, std::string(kOverridePrefix) + std::string(assignment));
@@ -248,7 +280,7 @@ void apply_override(toml::table& root, std::string_view assignment) {
                            std::string(e.description()) +
                            "); strings inside an array need double quotes, which the shell keeps "
                            "inside single quotes: --set '" +
-                           section + "." + key + "=[\"a\",\"b\"]'");
+                           dotted + "=[\"a\",\"b\"]'");
     }
     // A bare word such as modified-cam-clay is a string; it is parsed as one so that it, too,
     // carries the option as its source.

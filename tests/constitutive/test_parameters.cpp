@@ -163,6 +163,33 @@ TEST_CASE("overrides given with --set parse TOML values and bare words", "[param
   CHECK_THROWS_AS(apply_override(root, "material.model"), ParameterError);
 }
 
+TEST_CASE("overrides reach named tables and the entries of arrays of tables by their number", "[parameters]") {
+  toml::table root = toml::parse(R"(
+[materials.clay]
+cohesion = 100.0
+[[regions]]
+material = "clay"
+[[regions]]
+material = "sand"
+)");
+  apply_override(root, "materials.clay.cohesion=500");
+  apply_override(root, "regions.2.material=clay");
+  apply_override(root, "materials.sand.friction_angle=30");  // a table that does not exist yet
+  CHECK(root["materials"]["clay"]["cohesion"].value<double>() == 500.0);
+  CHECK(root["regions"][1]["material"].value<std::string>() == "clay");
+  CHECK(root["regions"][0]["material"].value<std::string>() == "clay");
+  CHECK(root["materials"]["sand"]["friction_angle"].value<double>() == 30.0);
+  CHECK_THROWS_WITH(apply_override(root, "regions.3.material=clay"),
+                    Contains("--set regions.3.material=clay: [[regions]] has 2 entries; name one by its number "
+                             "from 1 (regions.1.material=...)"));
+  CHECK_THROWS_WITH(apply_override(root, "regions.material=clay"),
+                    Contains("[[regions]] is an array of tables; name an entry by its number from 1"));
+  CHECK_THROWS_WITH(apply_override(root, "regions=3"), Contains("expected section.key=value"));
+  CHECK_THROWS_WITH(apply_override(root, "materials.clay.cohesion.x=1"),
+                    Contains("[materials.clay.cohesion] is not a table"));
+  CHECK_THROWS_WITH(apply_override(root, "materials..cohesion=1"), Contains("an empty name in the key path"));
+}
+
 TEST_CASE("a bad value given with --set is blamed on the option, not on the file", "[parameters]") {
   const auto read = [](const std::string& assignment) {
     toml::table root = toml::parse(kDruckerPrager, std::string("case.toml"));
