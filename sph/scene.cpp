@@ -104,6 +104,18 @@ void read_column(const TableReader& t, const toml::table& table, const toml::tab
   g.base_level = 0.0;
 }
 
+/// The top of a region along −g, the geostatic surface: its outline's highest point; for imported
+/// particles the highest particle + Δp/2 (the top of its cell, as a box's side).
+double region_top(const Geometry& g, const Region& r, double dx) {
+  double top = -std::numeric_limits<double>::infinity();
+  if (r.shape == Region::Shape::Particles) {
+    for (const Vec2& p : r.particles) top = std::max(top, g.height(p));
+    return top + 0.5 * dx;
+  }
+  for (const Vec2& v : r.outline) top = std::max(top, g.height(v));
+  return top;
+}
+
 /// [[regions]] and [[boundaries]] (geometry/read_layout.h).
 void read_regions(const TableReader& t, const toml::table& table, const toml::table& root, Geometry& g,
                   toml::table& extra, const std::vector<std::string>& materials) {
@@ -124,11 +136,13 @@ void read_regions(const TableReader& t, const toml::table& table, const toml::ta
   g.floor_length = 0.0;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double top = -inf, bottom = inf, right = -inf;
-  for (const Region& r : g.layout.regions)
+  for (const Region& r : g.layout.regions) {
+    top = std::max(top, region_top(g, r, dx));
     for (const Vec2& v : r.outline) {
-      top = std::max(top, g.height(v)), bottom = std::min(bottom, g.height(v));
+      bottom = std::min(bottom, g.height(v));
       right = std::max(right, v.x);
     }
+  }
   g.surface_level = top;
   g.base_level = bottom + 0.5 * dx;
   g.column_width = right - 0.5 * dx;

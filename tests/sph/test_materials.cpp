@@ -2,6 +2,8 @@
 // density in the geostatic state, and runs that the grouping does not change.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -161,4 +163,52 @@ TEST_CASE("each material integrates with its own scheme", "[sph][materials]") {
   REQUIRE(all_finite(run.particles));
   // The column has started to spread (the wall is gone).
   CHECK(run.deposit.runout_m > kWidth);
+}
+
+TEST_CASE("particles imported from CSV reproduce the column's lattice", "[sph][import]") {
+  const Scene imported = test::shipped_scene("imported-column", {"scene.end_time=0.02"});
+  const Scene column = test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.004", "scene.end_time=0.02"});
+  Collapse a(imported), b(column);
+  const Particles &pa = a.particles(), &pb = b.particles();
+  // The same soil: 11 x 16 positions bit for bit, in the same order, with the mass of the lattice.
+  REQUIRE(pa.soil_count == 11 * 16);
+  REQUIRE(pa.soil_count == pb.soil_count);
+  CHECK(std::equal(pa.x.begin(), pa.x.begin() + 176, pb.x.begin()));
+  CHECK(std::equal(pa.y.begin(), pa.y.begin() + 176, pb.y.begin()));
+  CHECK(std::equal(pa.mass.begin(), pa.mass.begin() + 176, pb.mass.begin()));
+  // The geostatic surface half a spacing above the highest particle, as the column's H + dp/2.
+  CHECK(imported.geometry.surface_level == Approx(column.geometry.surface_level).margin(1e-15));
+  for (std::size_t i = 0; i < pa.soil_count; ++i) CHECK(pa.syy[i] == Approx(pb.syy[i]).margin(1e-9));
+  // The same walls (ghosts within round-off of the column's given rows), so the first steps agree.
+  REQUIRE(pa.boundary_count() == pb.boundary_count());
+  a.run(ThreadTuner(1, false));
+  b.run(ThreadTuner(1, false));
+  for (std::size_t i = 0; i < pa.soil_count; ++i) {
+    CHECK(a.particles().x[i] == Approx(b.particles().x[i]).margin(1e-9));
+    CHECK(a.particles().y[i] == Approx(b.particles().y[i]).margin(1e-9));
+  }
+}
+
+TEST_CASE("a particle file is validated with the file and line named", "[sph][import]") {
+  const std::string dir = (std::filesystem::temp_directory_path() / "soilsph-import-test").string();
+  std::filesystem::create_directories(dir);
+  const auto scene_with = [&](const std::string& csv) {
+    std::ofstream(dir + "/p.csv") << csv;
+    return test::scene_from_text(replaced(shipped_text("imported-column"), "file = \"imported-column.csv\"",
+                                          "file = \"" + dir + "/p.csv\""));
+  };
+  using Catch::Matchers::Contains;
+  CHECK(scene_with("x,y,region\n0.0,0.0,sand\n0.004,0.0,sand\n").materials.size() == 1);
+  CHECK_THROWS_WITH(test::scene_from_text(replaced(shipped_text("imported-column"), "imported-column.csv", "/nonexistent/p.csv")),
+                    Contains("/nonexistent/p.csv: cannot read"));
+  CHECK_THROWS_WITH(scene_with("x,y\n0,0\n"), Contains("p.csv:1: the header must be x,y,region"));
+  CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0,sand\n0.004,zero,sand\n"),
+                    Contains("p.csv:3: y = \"zero\" is not a number"));
+  CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0\n"), Contains("p.csv:2: expected 3 fields"));
+  CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0,clay\n"), Contains("p.csv:2: region = \"clay\" names no"));
+  CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0,sand\n0.004,0.0,sand\n0.0041,0.001,sand\n"),
+                    Contains("p.csv:4: the particle at (0.0041, 0.001) m lies") && Contains("from that of line 3"));
+  CHECK_THROWS_WITH(scene_with("x,y,region\n1e5,0.0,sand\n"), Contains("p.csv:2: x = 1e5 m lies outside the domain"));
+  CHECK_THROWS_WITH(scene_with("x,y,region\n"), Contains("p.csv:1: no particle"));
+  std::filesystem::remove_all(dir);
 }
