@@ -6,7 +6,9 @@ number of frames, and every dataset of the final frame (exact equality, NaN equa
     /usr/bin/python3 scripts/compare_runs.py DIR_A DIR_B
 
 Prints the differences and exits 1 if there is any (the check that the column shorthand, rebuilt
-through the geometry layout, gives the same runs as before; docs/scenes.md)."""
+through the geometry layout, gives the same runs as before; docs/scenes.md). A summary field or a
+dataset that only the second run has is listed as added, not a difference: a newer soilsph writes
+more than an older one (e.g. the `material` field and the summary's `materials`)."""
 import json
 import pathlib
 import sys
@@ -29,9 +31,12 @@ def main() -> int:
         sys.exit(__doc__)
     a, b = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     sa, sb = (json.loads((d / "summary.json").read_text()) for d in (a, b))
-    differences = []
+    differences, added = [], []
     for key in sorted(set(sa) | set(sb)):
         if key in NOT_RESULTS:
+            continue
+        if key not in sa:
+            added.append(f"summary.json {key}")
             continue
         if sa.get(key, "<absent>") != sb.get(key, "<absent>"):
             differences.append(f"summary.json {key}: {sa.get(key, '<absent>')} != {sb.get(key, '<absent>')}")
@@ -40,7 +45,10 @@ def main() -> int:
         differences.append(f"final frame: {fa.name} != {fb.name}")
     with h5py.File(fa, "r") as ha, h5py.File(fb, "r") as hb:
         for name in sorted(set(ha) | set(hb)):
-            if name not in ha or name not in hb:
+            if name not in ha:
+                added.append(f"{fb.name} {name}")
+                continue
+            if name not in hb:
                 differences.append(f"{fa.name}: dataset {name} only in one run")
                 continue
             x, y = np.asarray(ha[name]), np.asarray(hb[name])
@@ -51,6 +59,8 @@ def main() -> int:
                                    f"largest by {np.nanmax(np.abs(x.astype(float) - y.astype(float))):.3g}")
     for d in differences:
         print(d)
+    if added:
+        print(f"added in {b} (not compared): {', '.join(added)}")
     print(f"{a} vs {b}: {'identical' if not differences else f'{len(differences)} differences'} "
           f"(summary.json results, {fa.name} datasets)")
     return 1 if differences else 0

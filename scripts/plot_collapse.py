@@ -1,13 +1,14 @@
 #!/usr/bin/python3
 """Pictures of an SPH collapse run of any scene (Debian's /usr/bin/python3: matplotlib, h5py, numpy).
 
-    plot_collapse.py DIR [--compare DIR2 ...]
+    plot_collapse.py DIR [--compare DIR2 ...] [--colour layer|material]
 
 reads DIR/frames.h5 and DIR/summary.json (docs/sph-output.md) and writes
   DIR/velocity_t0.05.png ... _t0.20.png  velocity magnitude at the frame nearest each time (paper Fig. 4)
   DIR/velocity.png                        the four snapshots together (2 x 2)
   DIR/deposit.png                         final deposit in horizontal layers of two alternating colours
-                                          (paper Fig. 5)
+                                          (paper Fig. 5); with --colour material, one colour per
+                                          material (the field `material`, names from summary.json)
   DIR/profiles.png                        with --compare: final surface profiles of DIR and DIR2 ...
                                           (labels: summary.json's model; a triangle marks the toe
                                           that summary.json's runout_m measures)
@@ -81,8 +82,9 @@ class Run:
             frame["speed"] = np.hypot(velocity[:, 0], velocity[:, 1])
         elif "speed" in group:
             frame["speed"] = group["speed"][()]
-        if "layer" in group:
-            frame["layer"] = group["layer"][()]
+        for name in ("layer", "material"):
+            if name in group:
+                frame[name] = group[name][()]
         return frame
 
     def lacks(self, datasets, indices, picture):
@@ -191,16 +193,29 @@ def plot_velocity(run):
     plt.close(fig)
 
 
-def plot_deposit(run):
-    if run.lacks(("layer",), [len(run.names) - 1], "deposit.png"):
+MATERIAL_COLOURS = ["#b5651d", "#e8c872", "#6a8caf", "#7fa36b"]  # clay-brown, sand, then others
+
+
+def plot_deposit(run, colour="layer"):
+    if run.lacks((colour,), [len(run.names) - 1], "deposit.png"):
         return
     final = run.frame(len(run.names) - 1)
     limits = extent([run.frame(0), final], run.spacing)
     fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
     prepare_axes(ax, limits, walls(run, final["time"]))
-    colours = np.array(LAYER_COLOURS)[final["layer"] % 2]
-    ax.scatter(final["x"] * CM, final["y"] * CM, c=colours, marker="s", s=marker_area(ax, run.spacing),
-               linewidths=0, zorder=2)
+    area = marker_area(ax, run.spacing)
+    if colour == "material":
+        materials = run.summary.get("materials") or []
+        for k in np.unique(final["material"]):
+            mine = final["material"] == k
+            m = materials[k] if k < len(materials) else {}
+            label = f"{m.get('name') or 'material ' + str(k)} ({m.get('model', '?')})"
+            ax.scatter(final["x"][mine] * CM, final["y"][mine] * CM, c=MATERIAL_COLOURS[k % len(MATERIAL_COLOURS)],
+                       marker="s", s=area, linewidths=0, zorder=2, label=label)
+        ax.legend(loc="upper left", markerscale=3)
+    else:
+        colours = np.array(LAYER_COLOURS)[final["layer"] % 2]
+        ax.scatter(final["x"] * CM, final["y"] * CM, c=colours, marker="s", s=area, linewidths=0, zorder=2)
     title = f"{run.label}: deposit at t = {final['time']:.3f} s"
     s = run.summary
     if run.complete and all(isinstance(s.get(key), (int, float)) for key in ("runout_m", "height_m", "repose_angle_deg")):
@@ -330,10 +345,12 @@ def main():
     parser.add_argument("dir", help="run directory with frames.h5 and summary.json")
     parser.add_argument("--compare", nargs="+", default=[], metavar="DIR2",
                         help="other runs whose final surface profiles are overlaid in DIR/profiles.png")
+    parser.add_argument("--colour", choices=("layer", "material"), default="layer",
+                        help="deposit.png: colour by horizontal layer (default) or by material")
     args = parser.parse_args()
     run = Run(args.dir)
     plot_velocity(run)
-    plot_deposit(run)
+    plot_deposit(run, args.colour)
     plot_histories(run)
     if args.compare:
         runs = [run] + [Run(d) for d in args.compare]

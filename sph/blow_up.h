@@ -14,6 +14,7 @@
 ///  - the wall guard pushing back at most a few particles in one step (max(10, 1 % of the soil)):
 ///    more means particles cross the walls, which the ghost particles should prevent.
 /// Each message names the particle and the quantity; the solver adds the step and the time.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -72,13 +73,15 @@ inline std::string particle_blow_up(const Particles& p, std::size_t i, double so
 
 /// The energy a run may never exceed in kinetic energy (J per metre of thickness): the soil's
 /// potential energy |g| (height − datum) along −g above the lowest wall, its elastic energy
-/// ½ σ:C:σ V and its kinetic energy now.
+/// ½ σ:C:σ V and its kinetic energy now; of the soil particles [begin, end), by default all.
 template <class Elastic>
-double energy_budget(const Particles& p, const Elastic& elasticity, Vec2 gravity, double datum) {
+double energy_budget(const Particles& p, const Elastic& elasticity, Vec2 gravity, double datum, std::size_t begin = 0,
+                     std::size_t end = std::numeric_limits<std::size_t>::max()) {
+  end = std::min(end, p.soil_count);
   const double g = norm(gravity);
   const Vec2 down = g > 0.0 ? Vec2{gravity.x / g, gravity.y / g} : Vec2{0.0, -1.0};
   double e = 0.0;
-  for (std::size_t i = 0; i < p.soil_count; ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const double volume = p.mass[i] / p.density[i];
     const Mat3& sigma = p.state[i].stress;
     const double height = -(down.x * p.x[i] + down.y * p.y[i]);

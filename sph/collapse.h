@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// One collapse of a scene, from the scene to the deposit: the particles and their geostatic state,
-/// the solver setup, the time loop with the model chosen once (std::visit), and the deposit
+/// the solver setup, the time loop with each material's model chosen once per step, and the deposit
 /// measures. `soilsph collapse` and `soilsph bench collapse` both run scenes through it.
 #include <utility>
 
@@ -14,22 +14,24 @@ namespace soilsph::sph {
 class Collapse {
  public:
   explicit Collapse(const Scene& scene)
-      : scene_(scene), particles_(geostatic_particles(scene)), setup_(make_solver_setup(scene)) {}
+      : scene_(scene),
+        particles_(geostatic_particles(scene)),
+        setup_(make_solver_setup(scene)),
+        groups_(material_groups(scene.materials, particles_)) {}
   /// A collapse that continues from `particles` (a checkpoint's) rather than the initial column.
   Collapse(const Scene& scene, Particles particles)
       : scene_(scene), particles_(std::move(particles)), setup_(make_solver_setup(scene)) {
-    copy_wall_attributes(particles_, build_particles(scene));
+    const Particles built = build_particles(scene);
+    copy_wall_attributes(particles_, built);
+    particles_.material = built.material;  // the order of the soil is the scene's, as built
+    groups_ = material_groups(scene.materials, particles_);
   }
 
   /// Runs the scene (solver.h, run) and returns its statistics.
   template <class OnFrame, class OnStep>
   RunStatistics run(ThreadTuner tuner, OnFrame&& on_frame, OnStep&& on_step, const RunControl& control = {}) {
-    return std::visit(
-        [&](const auto& model) {
-          return sph::run(model, setup_, particles_, std::forward<OnFrame>(on_frame),
-                          std::forward<OnStep>(on_step), tuner, control);
-        },
-        scene_.material);
+    return run_groups(groups_, setup_, particles_, std::forward<OnFrame>(on_frame), std::forward<OnStep>(on_step),
+                      tuner, control);
   }
   /// Runs without frames or progress.
   RunStatistics run(ThreadTuner tuner) {
@@ -57,6 +59,7 @@ class Collapse {
   const Scene& scene_;
   Particles particles_;
   SolverSetup setup_;
+  MaterialGroups groups_;  ///< the soil's materials, each a range of particles
 };
 
 }  // namespace soilsph::sph

@@ -31,6 +31,10 @@ RunEstimate estimate_run(const Scene& scene) {
   double soil = 0.0, boundary = 0.0;
   for (const Region& r : g.layout.regions) {
     const Vec2 lo = r.outline[0], hi = r.outline[2];
+    if (r.shape == Region::Shape::Particles) {
+      soil += static_cast<double>(r.particles.size());
+      continue;
+    }
     soil += r.shape == Region::Shape::Box ? std::round((hi.x - lo.x) / dx) * std::round((hi.y - lo.y) / dx)
                                           : std::abs(signed_area(r.outline)) / (dx * dx);
   }

@@ -46,6 +46,7 @@ class FrameBuffers {
     f.plastic_strain = plastic_;
     f.density = {p.density.data(), n};
     f.layer = p.layer;
+    f.material = p.material;
     return f;
   }
 

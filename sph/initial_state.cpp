@@ -40,6 +40,57 @@ Mat3 geostatic_stress(const Geometry& g, double density, double k0, double heigh
   return sigma;
 }
 
+/// Several materials: each soil particle's density and mass ρ Δp² from its own material, and each
+/// ghost's those of the material of the soil node nearest to it (a ghost stands for the soil it
+/// mirrors; its density follows the soil's each step, its mass stays).
+void set_material_densities(Particles& p, const Scene& scene, const std::vector<SoilNode>& soil) {
+  const double dx = scene.geometry.particle_spacing;
+  std::vector<double> rho;
+  for (const Material& m : scene.materials) rho.push_back(density(m));
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    p.density[i] = rho[static_cast<std::size_t>(p.material[i])];
+    p.mass[i] = p.density[i] * dx * dx;
+  }
+  for (std::size_t i = p.soil_count; i < p.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < soil.size(); ++j) {
+      const double d = norm(Vec2{p.x[i], p.y[i]} - soil[j].position);
+      if (d < nearest) nearest = d, p.density[i] = p.density[j];
+    }
+    p.mass[i] = p.density[i] * dx * dx;
+  }
+}
+
+/// Several materials: for each soil particle, Δp Σ (ρ_j − ρ_i) over the particles j above it in its
+/// lattice column (the same position across −g within Δp/2), so that ρ_i (surface − height) plus it
+/// is the weight of the soil above per unit area over |g|, each layer with its own density. Summed
+/// as Δp Σ_k n_k (ρ_k − ρ_i) over the materials k above, so that it is exactly 0 where they all
+/// have the particle's density.
+std::vector<double> overburden_density_excess(const Particles& p, const Geometry& g, const std::vector<double>& rho) {
+  const double dx = g.particle_spacing;
+  const Vec2 d = g.down();
+  std::vector<std::size_t> order(p.soil_count);
+  std::vector<long long> column(p.soil_count);
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    order[i] = i;
+    column[i] = std::llround((d.y * p.x[i] - d.x * p.y[i]) / dx);  // position across gravity, in spacings
+  }
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (column[a] != column[b]) return column[a] < column[b];
+    return g.height({p.x[a], p.y[a]}) > g.height({p.x[b], p.y[b]});  // from the top down
+  });
+  std::vector<double> excess(p.soil_count, 0.0);
+  std::vector<std::size_t> above(rho.size());  // particles of each material above, in this column
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (k == 0 || column[order[k]] != column[order[k - 1]]) std::fill(above.begin(), above.end(), 0);
+    const std::size_t i = order[k], own = static_cast<std::size_t>(p.material[i]);
+    for (std::size_t m = 0; m < rho.size(); ++m)
+      excess[i] += static_cast<double>(above[m]) * dx * (rho[m] - rho[own]);
+    ++above[own];
+  }
+  return excess;
+}
+
 /// The lowest point of the soil's outline along −g: layer ids count from it.
 double lowest_outline_height(const Geometry& g) {
   double lowest = std::numeric_limits<double>::infinity();
@@ -53,7 +104,11 @@ Particles build_particles(const Scene& scene) {
   const Geometry& g = scene.geometry;
   const double dx = g.particle_spacing;
   const double rho = density(scene.material);
-  const std::vector<SoilNode> soil = soil_nodes(g.layout, dx, scene.source);
+  std::vector<SoilNode> soil = soil_nodes(g.layout, dx, scene.source);
+  const auto material_of = [&](const SoilNode& n) { return scene.region_material[static_cast<std::size_t>(n.region)]; };
+  // Each material's particles contiguous (the step visits each model once per step, solver.h); the
+  // stable sort keeps the lattice order within a material, and the whole order with one material.
+  std::stable_sort(soil.begin(), soil.end(), [&](const SoilNode& a, const SoilNode& b) { return material_of(a) < material_of(b); });
   const std::vector<GhostPoint> ghosts = ghost_points(g.layout, dx, g.boundary_layers);
   const double lowest = lowest_outline_height(g);
 
@@ -64,6 +119,7 @@ Particles build_particles(const Scene& scene) {
     p.y[i] = soil[i].position.y;
     p.x0[i] = p.x[i], p.y0[i] = p.y[i];
     p.layer[i] = static_cast<int>((g.height(soil[i].position) - lowest) / scene.output.layer_thickness);
+    p.material[i] = material_of(soil[i]);
   }
   for (std::size_t k = 0; k < ghosts.size(); ++k) {
     const GhostPoint& b = ghosts[k];
@@ -79,6 +135,7 @@ Particles build_particles(const Scene& scene) {
   }
   std::fill(p.density.begin(), p.density.end(), rho);
   std::fill(p.mass.begin(), p.mass.end(), rho * dx * dx);
+  if (scene.materials.size() > 1) set_material_densities(p, scene, soil);
   wall_motions(scene).set_velocities(p, 0.0);
   return p;
 }
@@ -93,26 +150,38 @@ void copy_wall_attributes(Particles& to, const Particles& from) {
 }
 
 void set_geostatic_state(Particles& p, const Scene& scene) {
-  const double rho = density(scene.material);
-  std::visit(
-      [&](const auto& model) {
-        for (std::size_t i = 0; i < p.soil_count; ++i) {
-          State& s = p.state[i];
-          s = State{};
-          s.stress = geostatic_stress(scene.geometry, rho, scene.initial.lateral_stress_ratio,
-                                      scene.geometry.height({p.x[i], p.y[i]}));
-          s.pc = initial_preconsolidation(model, s.stress, scene.initial);
-          if (!inside_yield_surface(model, s)) {
-            std::ostringstream msg;
-            msg << scene.source << ": the geostatic stress at (" << p.x[i] << ", " << p.y[i] << ") m"
-                << " m lies outside the yield surface; [initial] lateral_stress_ratio = "
-                << scene.initial.lateral_stress_ratio << " is not admissible for this material";
-            throw ParameterError(msg.str());
+  const Geometry& g = scene.geometry;
+  const bool several = scene.materials.size() > 1;
+  std::vector<double> rho_of;
+  for (const Material& m : scene.materials) rho_of.push_back(density(m));
+  const std::vector<double> excess = several ? overburden_density_excess(p, g, rho_of) : std::vector<double>{};
+  for (std::size_t k = 0; k < scene.materials.size(); ++k) {
+    const double rho = density(scene.materials[k]);
+    const double k0 = scene.initial.material_lateral_stress_ratio[k];
+    std::visit(
+        [&](const auto& model) {
+          for (std::size_t i = 0; i < p.soil_count; ++i) {
+            if (p.material[i] != static_cast<int>(k)) continue;
+            State& s = p.state[i];
+            s = State{};
+            const double height = g.height({p.x[i], p.y[i]});
+            // One material: ρ (surface − height). Several: the mean density of the soil above.
+            const double overburden = several && excess[i] != 0.0 ? rho + excess[i] / (g.surface_level - height) : rho;
+            s.stress = geostatic_stress(g, overburden, k0, height);
+            s.pc = initial_preconsolidation(model, s.stress, scene.initial);
+            if (!inside_yield_surface(model, s)) {
+              std::ostringstream msg;
+              msg << scene.source << ": the geostatic stress at (" << p.x[i] << ", " << p.y[i] << ") m"
+                  << " lies outside the yield surface of "
+                  << (scene.material_names[k].empty() ? "[material]" : "[materials." + scene.material_names[k] + "]")
+                  << "; K0 = " << k0 << " ([initial] lateral_stress_ratio) is not admissible for it";
+              throw ParameterError(msg.str());
+            }
+            p.sxx[i] = s.stress(0, 0), p.syy[i] = s.stress(1, 1), p.sxy[i] = s.stress(0, 1);
           }
-          p.sxx[i] = s.stress(0, 0), p.syy[i] = s.stress(1, 1), p.sxy[i] = s.stress(0, 1);
-        }
-      },
-      scene.material);
+        },
+        scene.materials[k]);
+  }
 }
 
 double smallest_admissible_lateral_stress_ratio(const Material& material, const Geometry& geometry) {
@@ -121,7 +190,7 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
         const auto admissible = [&](double k0) {
           State s;
           s.stress = geostatic_stress(geometry, model.params().density, k0, geometry.base_level);
-          s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0});
+          s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0, {}});
           return inside_yield_surface(model, s);
         };
         double lo = 0.0, hi = 1.0;  // inadmissible at lo (or lo = 0), admissible at hi
@@ -133,10 +202,11 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
 }
 
 double largest_initial_pressure(const Scene& scene) {
-  const Mat3 base =
-      geostatic_stress(scene.geometry, density(scene.material), scene.initial.lateral_stress_ratio,
-                       scene.geometry.base_level);
-  return mean_pressure(base);
+  // Several materials: the heaviest one's weight and the largest K0, an upper bound.
+  double rho = 0.0, k0 = 0.0;
+  for (std::size_t k = 0; k < scene.materials.size(); ++k)
+    rho = std::max(rho, density(scene.materials[k])), k0 = std::max(k0, scene.initial.material_lateral_stress_ratio[k]);
+  return mean_pressure(geostatic_stress(scene.geometry, rho, k0, scene.geometry.base_level));
 }
 
 WallGuard wall_guard(const Scene& scene) {

@@ -13,6 +13,9 @@ namespace soilsph::sph {
 /// thickness, at rest, layer ids from the bottom along −g; then the ghost rows of every wall present
 /// at t = 0 (a wall removed at 0, the column's "instant" withdrawal, is never built: the run starts
 /// without it while the stress is the one it held), each with its wall's normal, friction and velocity.
+/// Several materials: the soil ordered by material (Scene::materials; the lattice order within
+/// each), each particle with its material index and ρ Δp² of its own ρ; each ghost with the density
+/// and mass of the soil particle nearest to it.
 Particles build_particles(const Scene& scene);
 
 /// Copies the ghosts' wall normals, friction and ids, which a checkpoint does not hold, from `from`
@@ -27,7 +30,9 @@ void copy_wall_attributes(Particles& to, const Particles& from);
 /// p_c,yield = p + q²/(M² p), the p_c that puts (p, q) on the surface (eq 24): at the free surface
 /// p → 0 and p_c,yield → 0, which would leave the top without any strength, so the floor
 /// ([initial] preconsolidation_floor) bounds it. Throws ParameterError if a particle's initial
-/// stress lies outside the yield surface (e.g. a K0 too far from 1 for D-P).
+/// stress lies outside the yield surface (e.g. a K0 too far from 1 for D-P). Several materials: each
+/// particle's σ_v is the weight of its lattice column above it, each particle with its own density,
+/// and σ_h uses its material's K0 (InitialConditions::material_lateral_stress_ratio).
 void set_geostatic_state(Particles& particles, const Scene& scene);
 
 /// The smallest lateral stress ratio K0 (σxx/σyy = σzz/σyy) for which the geostatic stress of the
@@ -38,7 +43,8 @@ void set_geostatic_state(Particles& particles, const Scene& scene);
 /// admissible: an isotropic stress lies inside a cone or an ellipse through the origin.
 double smallest_admissible_lateral_stress_ratio(const Material& material, const Geometry& geometry);
 
-/// The largest initial mean pressure p of the soil (Pa), for the elastic wave speed.
+/// The largest initial mean pressure p of the soil (Pa), for the elastic wave speed (several
+/// materials: an upper bound, with the heaviest density and the largest K0).
 double largest_initial_pressure(const Scene& scene);
 
 /// The wall guard of every wall surface present at t = 0.

@@ -2,7 +2,7 @@
 /// @file
 /// The particles as a structure of arrays. Soil particles come first, [0, soil_count); the fixed
 /// boundary (ghost) particles follow, [soil_count, size()). Every array has size() entries except
-/// `state` and `layer`, which belong to the soil only.
+/// `state`, `layer` and `material`, which belong to the soil only.
 #include <cstdint>
 #include <vector>
 
@@ -34,6 +34,7 @@ struct Particles {
   std::vector<double> x0, y0;              ///< position at t = 0 (m), for displacements (gauges)
   std::vector<State> state;                ///< full 3×3 stress and hardening state
   std::vector<int> layer;                  ///< horizontal layer id from the bottom (for pictures)
+  std::vector<int> material;               ///< index into Scene::materials; each material's particles are contiguous
 
   // Boundary only, indexed by (i − soil_count): the wall each ghost mirrors across, chosen once
   // when the ghosts are built so that the step runs one formula for every kind (stages/boundaries.h).
@@ -62,7 +63,7 @@ struct Particles {
 
   /// Bytes held by the arrays.
   std::size_t bytes() const {
-    std::size_t b = state.capacity() * sizeof(State) + layer.capacity() * sizeof(int) + boundary_kind.capacity() +
+    std::size_t b = state.capacity() * sizeof(State) + (layer.capacity() + material.capacity()) * sizeof(int) + boundary_kind.capacity() +
                     wall_id.capacity() * sizeof(int);
     for (const auto* a : {&wall_nx, &wall_ny, &wall_vx, &wall_vy, &wall_friction, &wall_stick})
       b += a->capacity() * sizeof(double);
@@ -77,6 +78,7 @@ struct Particles {
     for_each_array([&](const char*, std::vector<double>& a) { a.assign(k++ < kParticleArrays ? soil + boundary : soil, 0.0); });
     state.assign(soil, State{});
     layer.assign(soil, 0);
+    material.assign(soil, 0);
     boundary_kind.assign(boundary, BoundaryKind::NoSlip);
     for (auto* a : {&wall_nx, &wall_ny, &wall_vx, &wall_vy, &wall_friction, &wall_stick}) a->assign(boundary, 0.0);
     wall_id.assign(boundary, 0);

@@ -105,6 +105,18 @@ void read_column(const TableReader& t, const toml::table& table, const toml::tab
   g.base_level = 0.0;
 }
 
+/// The top of a region along −g, the geostatic surface: its outline's highest point; for imported
+/// particles the highest particle + Δp/2 (the top of its cell, as a box's side).
+double region_top(const Geometry& g, const Region& r, double dx) {
+  double top = -std::numeric_limits<double>::infinity();
+  if (r.shape == Region::Shape::Particles) {
+    for (const Vec2& p : r.particles) top = std::max(top, g.height(p));
+    return top + 0.5 * dx;
+  }
+  for (const Vec2& v : r.outline) top = std::max(top, g.height(v));
+  return top;
+}
+
 /// [[regions]] and [[boundaries]] (geometry/read_layout.h).
 void read_regions(const TableReader& t, const toml::table& table, const toml::table& root, Geometry& g,
                   toml::table& extra, const std::vector<std::string>& materials) {
@@ -125,11 +137,13 @@ void read_regions(const TableReader& t, const toml::table& table, const toml::ta
   g.floor_length = 0.0;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double top = -inf, bottom = inf, right = -inf;
-  for (const Region& r : g.layout.regions)
+  for (const Region& r : g.layout.regions) {
+    top = std::max(top, region_top(g, r, dx));
     for (const Vec2& v : r.outline) {
-      top = std::max(top, g.height(v)), bottom = std::min(bottom, g.height(v));
+      bottom = std::min(bottom, g.height(v));
       right = std::max(right, v.x);
     }
+  }
   g.surface_level = top;
   g.base_level = bottom + 0.5 * dx;
   g.column_width = right - 0.5 * dx;
@@ -150,21 +164,54 @@ RestCriterion read_rest(const TableReader& t, const Geometry& g) {
   return r;
 }
 
-InitialConditions read_initial(const TableReader& t, const Material& material, const Geometry& geometry) {
+/// K0's default and its lower bound for one material (see read_initial).
+struct LateralStressRatio {
+  double elastic, bound;
+  double preferred() const { return std::max(elastic, bound); }
+};
+
+LateralStressRatio lateral_stress_ratio_of(const Material& material, const Geometry& geometry) {
+  const double nu = std::visit([](const auto& m) { return m.elasticity().poisson_ratio(); }, material);
+  return {nu / (1.0 - nu), smallest_admissible_lateral_stress_ratio(material, geometry)};
+}
+
+InitialConditions read_initial(const TableReader& t, const std::vector<Material>& materials,
+                               const std::vector<std::string>& names, const Geometry& geometry) {
   // Default K0 = ν/(1−ν): the lateral stress of an elastic column under its own weight between
   // rigid, frictionless walls (uniaxial strain), so the initial state is an elastic equilibrium.
   // Where the yield surface cannot hold it (D-P with φ below about 30° at ν = 0.3) an elastic-
   // plastic column yields as it is loaded and rests on the surface: the default is then the
-  // smallest admissible K0, and every K0 below it is an error that states the bound.
-  const double nu = std::visit([](const auto& m) { return m.elasticity().poisson_ratio(); }, material);
-  const double elastic = nu / (1.0 - nu), bound = smallest_admissible_lateral_stress_ratio(material, geometry);
-  if (bound > elastic && !t.has("lateral_stress_ratio"))
-    std::cerr << "note: " << t.source() << ": [initial] lateral_stress_ratio defaults to " << bound
-              << ", the smallest the yield surface holds at the column's base (the elastic nu/(1-nu) = " << elastic
-              << " lies outside it)\n";
+  // smallest admissible K0, and every K0 below it is an error that states the bound. With several
+  // materials each has its own default; a K0 given in [initial] holds for all and must be
+  // admissible for each (its bound is the largest of theirs).
+  std::vector<LateralStressRatio> k0;
+  double bound = 0.0;
+  for (const Material& m : materials) {
+    k0.push_back(lateral_stress_ratio_of(m, geometry));
+    bound = std::max(bound, k0.back().bound);
+  }
   InitialConditions c{};
-  c.lateral_stress_ratio = t.number_or("lateral_stress_ratio", std::max(elastic, bound),
-                                       bound > 0.0 ? Range::closed_open(bound, 1.0) : Range::open(0.0, 1.0));
+  if (materials.size() == 1) {
+    if (k0[0].bound > k0[0].elastic && !t.has("lateral_stress_ratio"))
+      std::cerr << "note: " << t.source() << ": [initial] lateral_stress_ratio defaults to " << k0[0].bound
+                << ", the smallest the yield surface holds at the column's base (the elastic nu/(1-nu) = "
+                << k0[0].elastic << " lies outside it)\n";
+    c.lateral_stress_ratio = t.number_or("lateral_stress_ratio", k0[0].preferred(),
+                                         bound > 0.0 ? Range::closed_open(bound, 1.0) : Range::open(0.0, 1.0));
+    c.material_lateral_stress_ratio = {c.lateral_stress_ratio};
+  } else if (t.has("lateral_stress_ratio")) {  // one K0 for all; without the key each its own (not recorded)
+    c.lateral_stress_ratio = t.number("lateral_stress_ratio", bound > 0.0 ? Range::closed_open(bound, 1.0) : Range::open(0.0, 1.0));
+    c.material_lateral_stress_ratio.assign(materials.size(), c.lateral_stress_ratio);
+  } else {
+    for (std::size_t k = 0; k < materials.size(); ++k) {
+      if (k0[k].bound > k0[k].elastic)
+        std::cerr << "note: " << t.source() << ": K0 of [materials." << names[k] << "] defaults to " << k0[k].bound
+                  << ", the smallest its yield surface holds at the soil's base (the elastic nu/(1-nu) = "
+                  << k0[k].elastic << " lies outside it)\n";
+      c.material_lateral_stress_ratio.push_back(k0[k].preferred());
+    }
+    c.lateral_stress_ratio = c.material_lateral_stress_ratio.front();
+  }
   c.overconsolidation_ratio = t.number_or("overconsolidation_ratio", 1.0, Range::closed_open(1.0, 1e3));
   c.preconsolidation_floor = t.number_or("preconsolidation_floor", 100.0, limits::stress_range(), "Pa");
   return c;
@@ -200,8 +247,7 @@ OutputSettings read_output(const TableReader& t, double end_time) {
 }  // namespace
 
 namespace {
-/// The named materials of [materials.NAME] (or the one [material], named ""), and the one the
-/// regions use: several in one scene is the next step of issue #12, refused until then.
+/// The named materials of [materials.NAME] (or the one [material], named "").
 struct Materials {
   std::vector<std::string> names;
   std::vector<std::unique_ptr<TableReader>> tables;
@@ -229,15 +275,17 @@ Materials material_tables(const toml::table& root, const std::string& source) {
   return m;
 }
 
-/// The one material the regions use.
-std::size_t material_in_use(const Geometry& g, const Materials& m, const std::string& source) {
-  const std::string& first = g.layout.regions.front().material;
-  for (const Region& r : g.layout.regions)
-    if (r.material != first)
-      throw ParameterError(source + ": " + r.name + " material = \"" + r.material + "\" is a second material (" +
-                           g.layout.regions.front().name + " has \"" + first +
-                           "\"); one scene holds one material until several are supported (issue #12)");
-  return static_cast<std::size_t>(std::find(m.names.begin(), m.names.end(), first) - m.names.begin());
+/// The materials the regions use, as indices into `m`, in the order of their first use; each
+/// region's index into that list in `region_material`.
+std::vector<std::size_t> materials_in_use(const Geometry& g, const Materials& m, std::vector<int>& region_material) {
+  std::vector<std::size_t> used;
+  for (const Region& r : g.layout.regions) {
+    const auto table = static_cast<std::size_t>(std::find(m.names.begin(), m.names.end(), r.material) - m.names.begin());
+    auto at = std::find(used.begin(), used.end(), table);
+    if (at == used.end()) at = used.insert(used.end(), table);
+    region_material.push_back(static_cast<int>(at - used.begin()));
+  }
+  return used;
 }
 }  // namespace
 
@@ -275,24 +323,34 @@ Scene read_scene(const toml::table& root, const std::string& source) {
       throw ParameterError(source + ": [materials.NAME] tables need [[regions]] that name them; the column keys use [material]");
     read_column(scene, scene_table, root, geometry, extra);
   }
-  const std::size_t used = material_in_use(geometry, materials, source);
+  std::vector<int> region_material;
+  const std::vector<std::size_t> used = materials_in_use(geometry, materials, region_material);
   const RestCriterion rest = read_rest(scene, geometry);
-  Material material = read_material(*materials.tables[used]);
-  const double base_stress =
-      density(material) * geometry.gravity_magnitude() * (geometry.column_height + geometry.particle_spacing);
+  std::vector<Material> in_use;
+  std::vector<std::string> names_in_use;
+  double heaviest = 0.0;
+  for (const std::size_t k : used) {
+    in_use.push_back(read_material(*materials.tables[k]));
+    names_in_use.push_back(materials.names[k]);
+    heaviest = std::max(heaviest, density(in_use.back()));
+  }
+  const double base_stress = heaviest * geometry.gravity_magnitude() * (geometry.column_height + geometry.particle_spacing);
   if (!std::isfinite(base_stress))
     throw ParameterError(source + ": the weight of the column overflows: [material] density x [scene] gravity x "
                          "[scene] column_height is not a finite stress (Pa)");
   Scene result{source,
                {},
                geometry,
-               read_initial(initial, material, geometry),
+               read_initial(initial, in_use, names_in_use, geometry),
                read_numerics(numerics),
                read_output(output, geometry.end_time),
-               std::move(material),
+               in_use.front(),
                rest,
                {scene.number_or("max_run_hours", 24.0, Range::positive(), "h")},
                {},
+               std::move(in_use),
+               std::move(names_in_use),
+               std::move(region_material),
                {},
                {}};
   for (const TableReader* t : {&scene, &initial, &numerics, &output}) t->reject_unknown_keys();
@@ -302,7 +360,7 @@ Scene read_scene(const toml::table& root, const std::string& source) {
   result.gauges = read_gauges(root, source, gauges_resolved);
   // Every named material is read (validated) even if unused, so a typo in one is never silent.
   for (std::size_t k = 0; k < materials.tables.size(); ++k)
-    if (k != used) (void)read_material(*materials.tables[k]);
+    if (std::find(used.begin(), used.end(), k) == used.end()) (void)read_material(*materials.tables[k]);
   toml::table scene_resolved = scene.resolved();
   for (const char* key : {"gravity", "lattice_origin"})
     if (const toml::node* v = extra.get(key)) scene_resolved.insert_or_assign(key, *v);

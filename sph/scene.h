@@ -56,9 +56,11 @@ struct Geometry {
 
 /// [initial]: the geostatic state before the wall moves.
 struct InitialConditions {
-  double lateral_stress_ratio;     ///< K0 = σxx/σyy = σzz/σyy
+  double lateral_stress_ratio;     ///< K0 = σxx/σyy = σzz/σyy (of the first material in use)
   double overconsolidation_ratio;  ///< MCC: p_c = OCR × (p_c that puts the initial stress on the surface)
   double preconsolidation_floor;   ///< MCC: lower bound of the initial p_c (Pa), where p → 0
+  /// K0 of each material in use (Scene::materials): the key if given, else each one's default.
+  std::vector<double> material_lateral_stress_ratio;
 };
 
 /// [numerics]
@@ -93,12 +95,17 @@ struct Scene {
   InitialConditions initial;
   Numerics numerics;
   OutputSettings output;
-  Material material;
+  Material material;  ///< the first material in use: the only one of a single-material scene
   RestCriterion rest;  ///< [scene] stop_at_rest, rest_speed, rest_duration, rest_fraction
   RunLimits limits;    ///< [scene] max_run_hours
   /// The scene as read: every key with the value used, defaults included. Read back (read_scene),
   /// it gives the same scene; a run saves it as DIR/scene.toml and records it in summary.json.
   toml::table resolved;
+  /// The materials the regions use, in the order of their first use (materials[0] is `material`);
+  /// the soil particles of each are contiguous, in this order (initial_state.h).
+  std::vector<Material> materials;
+  std::vector<std::string> material_names;  ///< their [materials.NAME] names ("" for [material])
+  std::vector<int> region_material;         ///< each layout region's index into `materials`
   DepositFrame deposit;       ///< [deposit]: where the deposit measures are taken from
   std::vector<Gauge> gauges;  ///< [[gauges]]
 };

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 namespace soilsph::sph {
 
@@ -48,14 +49,41 @@ double potential_datum(const Scene& scene) {
 }
 }  // namespace
 
+MaterialGroups material_groups(const std::vector<Material>& materials, const Particles& p) {
+  MaterialGroups groups;
+  std::size_t begin = 0;
+  for (std::size_t k = 0; k < materials.size(); ++k) {
+    std::size_t end = begin;
+    while (end < p.soil_count && p.material[end] == static_cast<int>(k)) ++end;
+    const Material& m = materials[k];
+    groups.push_back({m, std::visit([](const auto& model) { return Material(fallback_model(model)); }, m), begin, end,
+                      std::visit([](const auto& model) { return model.elasticity().kind(); }, m) ==
+                          Elasticity::Kind::PressureDependent});
+    begin = end;
+  }
+  if (begin != p.soil_count)
+    throw std::logic_error("material_groups: the soil particles are not ordered by material (initial_state.h)");
+  return groups;
+}
+
 SolverSetup make_solver_setup(const Scene& scene) {
   const Geometry& g = scene.geometry;
   const CubicSpline kernel(g.smoothing_length());
-  const double rho = density(scene.material);
   // The stiffest elastic state of the column: moduli at the largest initial pressure (constant
-  // elasticity ignores it; pressure-dependent MCC is stiffest at the base).
-  const Elasticity elasticity = std::visit([](const auto& m) { return m.elasticity(); }, scene.material);
-  const double c = p_wave_speed(elasticity.at(largest_initial_pressure(scene)), rho);
+  // elasticity ignores it; pressure-dependent MCC is stiffest at the base). Several materials: the
+  // largest of their speeds, and apart that of those whose stiffness does not follow the pressure.
+  const double p0 = largest_initial_pressure(scene);
+  double c = 0.0, constant_c = 0.0;
+  bool pressure_dependent = false;
+  for (const Material& material : scene.materials) {
+    const Elasticity elasticity = std::visit([](const auto& m) { return m.elasticity(); }, material);
+    const double ck = p_wave_speed(elasticity.at(p0), density(material));
+    c = std::max(c, ck);
+    if (elasticity.kind() == Elasticity::Kind::PressureDependent)
+      pressure_dependent = true;
+    else
+      constant_c = std::max(constant_c, ck);
+  }
 
   MomentumParams momentum;
   momentum.viscosity_alpha = scene.numerics.viscosity_alpha;
@@ -75,10 +103,11 @@ SolverSetup make_solver_setup(const Scene& scene) {
           wall_motions(scene),
           potential_datum(scene),
           scene.numerics.velocity_gradient_correction,
-          elasticity.kind() == Elasticity::Kind::PressureDependent,
+          pressure_dependent,
           scene.rest,
           domain(scene),
-          scene.output.checkpoint_interval};
+          scene.output.checkpoint_interval,
+          constant_c};
 }
 
 }  // namespace soilsph::sph

@@ -1,9 +1,11 @@
 #pragma once
 /// @file
 /// The time loop of the collapse, in one place. `advance` is one leapfrog step and reads as the
-/// algorithm; `run` repeats it until the end time or rest and hands frames to the caller. Both are
-/// templates on the constitutive model: the caller chooses the model once (std::visit over the
-/// Material) and the per-particle update is a direct, inlinable call.
+/// algorithm; `run` repeats it until the end time or rest and hands frames to the caller. The soil
+/// is one MaterialGroup per material, each a contiguous range of particles: the stress update
+/// chooses each group's model once per step (std::visit outside the loop over its particles), so
+/// the per-particle update is a direct, inlinable call. The typed `run(model, ...)` and
+/// `advance(model, ...)` run the whole soil with one model (tests).
 ///
 /// Threading: `run` opens one OpenMP parallel region per chunk of steps (about 50 ms), with the
 /// thread count a ThreadTuner picks for it. A step is four work-shared loops over particles, each
@@ -44,6 +46,18 @@
 
 namespace soilsph::sph {
 
+/// The soil particles [begin, end) of one material, with its model and the model a failed update
+/// falls back on (stages/stress_update.h).
+struct MaterialGroup {
+  Material model, fallback;
+  std::size_t begin = 0, end = 0;
+  bool pressure_dependent = false;  ///< its elastic stiffness follows the pressure (MCC's κ)
+};
+using MaterialGroups = std::vector<MaterialGroup>;
+
+/// The groups of the soil's materials (Particles::material, contiguous per material).
+MaterialGroups material_groups(const std::vector<Material>& materials, const Particles& p);
+
 /// Everything fixed for a run, derived from the scene once.
 struct SolverSetup {
   CubicSpline kernel;
@@ -60,6 +74,7 @@ struct SolverSetup {
   RestCriterion rest;
   Domain domain;                    ///< no soil particle may leave it (blow_up.h)
   double checkpoint_interval = 0.0;  ///< s of simulated time between checkpoints (0: none at intervals)
+  double constant_stiffness_sound_speed = 0.0;  ///< the largest c of the materials of constant stiffness
 
   /// Δt of the soil at rest with the initial sound speed: the largest step the run takes while c
   /// does not fall.
@@ -105,11 +120,33 @@ struct Workspace {
 };
 
 namespace detail {
+/// Calls f(model, fallback, begin, end) for every group, with its model's own type.
+template <class F>
+void for_each_group(const MaterialGroups& groups, F&& f) {
+  for (const MaterialGroup& group : groups)
+    std::visit(
+        [&](const auto& model) {
+          using Model = std::decay_t<decltype(model)>;
+          f(model, std::get<Model>(group.fallback), group.begin, group.end);
+        },
+        group.model);
+}
+
+/// The largest P-wave speed of the soil now: each pressure-dependent material's over its own
+/// particles at their pressure, and the constant-stiffness materials' fixed one.
+inline double current_sound_speed(const MaterialGroups& groups, const SolverSetup& setup, const Particles& p) {
+  double c = setup.constant_stiffness_sound_speed;
+  for (const MaterialGroup& group : groups)
+    if (group.pressure_dependent)
+      c = std::max(c, std::visit([&](const auto& m) { return largest_p_wave_speed(m.elasticity(), p, group.begin, group.end); },
+                                 group.model));
+  return c;
+}
+
 /// The serial end of a step: swap in v^{n+½} and ρ^{n+1}, the wall guard, the step's largest speed
 /// and number of moving particles, whether the next step must search neighbours, and the blow-up
 /// checks (blow_up.h) in the same pass over the soil.
-template <class Model>
-void close_step(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
+inline void close_step(const MaterialGroups& groups, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
   std::swap(p.vx, work.vx_next);
   std::swap(p.vy, work.vy_next);
   std::swap(p.density, work.density_next);
@@ -142,19 +179,16 @@ void close_step(const Model& model, const SolverSetup& setup, Particles& p, Work
   }
   if (!work.blow_up.empty()) return;  // a search on such positions would fail or exhaust memory
   work.search_next = work.neighbours.search_needed(p.x, p.y);
-  if constexpr (requires { model.elasticity(); }) {
-    if (setup.pressure_dependent_stiffness && work.search_next)
-      work.sound_speed = largest_p_wave_speed(model.elasticity(), p);
-  }
+  if (setup.pressure_dependent_stiffness && work.search_next) work.sound_speed = current_sound_speed(groups, setup, p);
 }
 }  // namespace detail
 
 /// One leapfrog step of length dt from t^n to t^{n+1} (stages/leapfrog.h), then `on_closed()` on
-/// one thread; `fallback` takes over a failed stress update (stages/stress_update.h). Call from
-/// every thread of a parallel region, or outside one.
-template <class Model, class OnClosed>
-void advance(const Model& model, const Model& fallback, const SolverSetup& setup, Particles& p,
-             Workspace& work, double dt, OnClosed&& on_closed) {
+/// one thread; each group's `fallback` takes over a failed stress update (stages/stress_update.h).
+/// Call from every thread of a parallel region, or outside one.
+template <class OnClosed>
+void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Particles& p, Workspace& work, double dt,
+                    OnClosed&& on_closed) {
   NeighbourList& nl = work.neighbours;
   const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
   const auto& m = setup.momentum;
@@ -180,6 +214,7 @@ void advance(const Model& model, const Model& fallback, const SolverSetup& setup
       if (m.artificial_stress.enabled) set_artificial_stress(p, i, m.artificial_stress.epsilon);
     }
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
+    //    Each particle's own ρ and σ, whatever its material: no interface model (docs/scenes.md).
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = 0; s < soil; ++s) {
       const auto i = static_cast<std::size_t>(s);
@@ -201,31 +236,42 @@ void advance(const Model& model, const Model& fallback, const SolverSetup& setup
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = soil; s < all; ++s)
       mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.vx_next, work.vy_next);
-      // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
-      //    stage of this loop reads x or σ of a neighbour: the pairs hold x_i − x_j).
+    // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
+    //    stage of this loop reads x or σ of a neighbour: the pairs hold x_i − x_j). One loop per
+    //    material, its model chosen once here by every thread alike.
+    detail::for_each_group(groups, [&](const auto& model, const auto& fallback, std::size_t begin, std::size_t end) {
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t s = 0; s < soil; ++s) {
-      const auto i = static_cast<std::size_t>(s);
-      const KinematicRates rates =
-          kinematic_rates_of(p, nl, i, work.vx_next, work.vy_next, work.volume,
-                             setup.velocity_gradient_correction);
-      update_particle_stress(model, fallback, p, i, rates.L, dt, work.failure);
-      work.density_next[i] = p.density[i] + dt * rates.density_rate;
-      p.x[i] += dt * work.vx_next[i];
-      p.y[i] += dt * work.vy_next[i];
-    }
+      for (auto s = static_cast<std::ptrdiff_t>(begin); s < static_cast<std::ptrdiff_t>(end); ++s) {
+        const auto i = static_cast<std::size_t>(s);
+        const KinematicRates rates =
+            kinematic_rates_of(p, nl, i, work.vx_next, work.vy_next, work.volume, setup.velocity_gradient_correction);
+        update_particle_stress(model, fallback, p, i, rates.L, dt, work.failure);
+        work.density_next[i] = p.density[i] + dt * rates.density_rate;
+        p.x[i] += dt * work.vx_next[i];
+        p.y[i] += dt * work.vy_next[i];
+      }
+    });
   }
 #pragma omp single
   {
-    if (!work.failed()) detail::close_step(model, setup, p, work, dt);
+    if (!work.failed()) detail::close_step(groups, setup, p, work, dt);
     on_closed();
   }
 }
 
-/// One step without a callback, the model's own fallback built for it (tests).
+/// One group over the whole soil with one model (tests).
+template <class Model>
+MaterialGroups single_material(const Model& model, const Particles& p) {
+  bool pressure_dependent = false;
+  if constexpr (requires { model.elasticity(); })
+    pressure_dependent = model.elasticity().kind() == Elasticity::Kind::PressureDependent;
+  return {MaterialGroup{Material(model), Material(fallback_model(model)), 0, p.soil_count, pressure_dependent}};
+}
+
+/// One step of the whole soil with one model and its own fallback, without a callback (tests).
 template <class Model>
 void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
-  advance(model, fallback_model(model), setup, p, work, dt, [] {});
+  advance_groups(single_material(model, p), setup, p, work, dt, [] {});
 }
 
 /// Why a run returned.
@@ -328,14 +374,13 @@ struct RunControl {
 /// search is rethrown after the region: IntegrationError naming the particle, BlowUp (blow_up.h),
 /// or the search's std::runtime_error, each with the step and time added. `tuner` picks the threads
 /// of each chunk of steps (sph/thread_tuner.h); by default the OpenMP maximum throughout.
-template <class Model, class OnFrame, class OnStep>
-RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, OnFrame&& on_frame,
-                  OnStep&& on_step, ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false),
-                  const RunControl& control = {}) {
+template <class OnFrame, class OnStep>
+RunStatistics run_groups(const MaterialGroups& groups, const SolverSetup& setup, Particles& p, OnFrame&& on_frame,
+                         OnStep&& on_step, ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false),
+                         const RunControl& control = {}) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   Workspace work(setup, p);
-  const Model fallback = fallback_model(model);  // for a failed update (stages/stress_update.h)
   const LoopState* resume = control.resume;
   StepClock clock = resume ? StepClock(setup, resume->stats.end_time, resume->next_frame) : StepClock(setup);
   RestWatch rest = resume ? RestWatch(setup.rest, resume->rest) : RestWatch(setup.rest);
@@ -353,8 +398,10 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
     work.neighbours.search(resume->search_x, resume->search_y, setup.kernel, p.soil_count);
     work.search_next = work.neighbours.search_needed(p.x, p.y);
   }
-  if constexpr (requires { model.elasticity(); })
-    work.energy_budget = energy_budget(p, model.elasticity(), setup.momentum.gravity, setup.potential_datum);
+  work.energy_budget = 0.0;
+  detail::for_each_group(groups, [&](const auto& model, const auto&, std::size_t begin, std::size_t end) {
+    work.energy_budget += energy_budget(p, model.elasticity(), setup.momentum.gravity, setup.potential_datum, begin, end);
+  });
   const double wall_before = stats.wall_seconds;
   double next_checkpoint = setup.checkpoint_interval > 0.0
                                ? setup.checkpoint_interval * (std::floor(clock.time() / setup.checkpoint_interval) + 1)
@@ -450,7 +497,7 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
                       steps_now = tuner.trying() ? std::max<std::size_t>(chunk / 4, 4) : chunk;
 #pragma omp parallel num_threads(tuner.threads())
     for (std::size_t k = 0; k < steps_now && !stop; ++k)  // `stop` is read after the closing barrier
-      advance(model, fallback, setup, p, work, dt, close);
+      advance_groups(groups, setup, p, work, dt, close);
     const std::chrono::duration<double> seconds = Clock::now() - chunk_start;
     const auto steps = static_cast<double>(stats.steps - first);
     tuner.record(seconds.count(), steps * static_cast<double>(p.soil_count));
@@ -464,6 +511,14 @@ RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, On
   stats.workspace_bytes =
       work.neighbours.bytes_per_particle() * p.size() + 4 * p.size() * sizeof(double);  // the *_next buffers, volume
   return stats;
+}
+
+/// The same with one model for the whole soil (tests).
+template <class Model, class OnFrame, class OnStep>
+RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, OnFrame&& on_frame, OnStep&& on_step,
+                  ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false), const RunControl& control = {}) {
+  return run_groups(single_material(model, p), setup, p, std::forward<OnFrame>(on_frame),
+                    std::forward<OnStep>(on_step), tuner, control);
 }
 
 }  // namespace soilsph::sph

@@ -101,8 +101,21 @@ std::string integrator_of(const Model& model) {
 /// The summary's record of the run: what it is, where it came from, and (after a stop) its figures.
 sph::Summary describe(const sph::Scene& scene, const sph::Collapse& collapse, int threads) {
   sph::Summary s;
-  s.model = std::string(model_name(scene.material));
-  s.integrator = std::visit([](const auto& m) { return integrator_of(m); }, scene.material);
+  std::vector<std::string> models, integrators;  // the distinct ones, in the materials' order
+  const auto join = [](std::string& to, std::vector<std::string>& seen, const std::string& name) {
+    if (std::find(seen.begin(), seen.end(), name) != seen.end()) return;
+    to += (seen.empty() ? "" : " + ") + name;
+    seen.push_back(name);
+  };
+  for (std::size_t k = 0; k < scene.materials.size(); ++k) {
+    const Material& m = scene.materials[k];
+    const std::string model(model_name(m)), integrator = std::visit([](const auto& x) { return integrator_of(x); }, m);
+    join(s.model, models, model);
+    join(s.integrator, integrators, integrator);
+    const auto& kind = collapse.particles().material;
+    s.materials.push_back({scene.material_names[k], model, integrator,
+                           static_cast<std::size_t>(std::count(kind.begin(), kind.end(), static_cast<int>(k)))});
+  }
   s.particles = collapse.particles().soil_count;
   s.boundary_particles = collapse.particles().boundary_count();
   s.particle_spacing = scene.geometry.particle_spacing;
@@ -168,7 +181,7 @@ void run_collapse(const CollapseOptions& o) {
   if (scene.output.history_interval > 0.0) histories.emplace(scene, particles, setup.kernel);
   std::cout << (resumed ? dir.string() + " (resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s)"
                         : o.scene)
-            << ": " << model_name(scene.material) << ", " << particles.soil_count << " soil + "
+            << ": " << describe(scene, collapse, tuner.threads()).model << ", " << particles.soil_count << " soil + "
             << particles.boundary_count() << " boundary particles, h = " << setup.kernel.smoothing_length()
             << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step()
             << " s at rest, to t = " << scene.geometry.end_time << " s" << (scene.rest.enabled ? " or rest" : "")

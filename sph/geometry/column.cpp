@@ -17,7 +17,8 @@ Layout column_layout(const ColumnKeys& c, const std::string& material) {
   layout.regions.push_back({Region::Shape::Box,
                             {{-half, -half}, {W + half, -half}, {W + half, c.height + half}, {-half, c.height + half}},
                             material,
-                            "[scene] column"});
+                            "[scene] column",
+                            {}});
   // The strips are given, not derived from the surfaces, so that each ghost is computed by the same
   // operations as before the layout existed (bit-identical runs): the floor's rows from under the
   // fixed wall's last layer (x = W + layers Δp) leftwards, the walls' rows upwards from y = 0.

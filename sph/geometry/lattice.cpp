@@ -17,6 +17,10 @@ std::vector<SoilNode> soil_nodes(const Layout& layout, double dx, const std::str
   const Vec2 o = layout.lattice_origin;
   for (std::size_t r = 0; r < layout.regions.size(); ++r) {
     const Region& region = layout.regions[r];
+    if (region.shape == Region::Shape::Particles) {  // as read (geometry/read_particles.h), off the lattice too
+      for (const Vec2& p : region.particles) nodes.push_back({p, static_cast<int>(r)});
+      continue;
+    }
     Vec2 lo = region.outline.front(), hi = lo;
     for (const Vec2& v : region.outline) lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
     // Index ranges with a tolerance, so that a box side on a node keeps it whatever the round-off.

@@ -16,11 +16,13 @@ namespace soilsph::sph {
 
 /// A soil region: filled with the lattice nodes that lie inside its outline (docs/scenes.md).
 struct Region {
-  enum class Shape { Box, Polygon };
+  enum class Shape { Box, Polygon, Particles };
   Shape shape = Shape::Box;
-  std::vector<Vec2> outline;  ///< counter-clockwise; a box as its four corners from (min.x, min.y)
+  std::vector<Vec2> outline;  ///< counter-clockwise; a box as its four corners from (min.x, min.y);
+                              ///< imported particles: the box of their cells (±Δp/2)
   std::string material;       ///< the name of its [materials.NAME] table ("" for [material])
   std::string name;           ///< for messages, e.g. "[[regions]] #1"
+  std::vector<Vec2> particles;  ///< Particles: the positions read from its file (m), in the file's order
 };
 
 /// How a wall acts on the soil (stages/boundaries.h has the mirroring of each).

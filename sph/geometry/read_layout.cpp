@@ -7,6 +7,9 @@
 
 #include "constitutive/parameters.h"
 #include "sph/geometry/polygon.h"
+#include "sph/geometry/read_particles.h"
+
+#include <filesystem>
 
 namespace soilsph::sph {
 
@@ -79,14 +82,33 @@ void check_on_cell_edge(const std::string& where, std::string_view key, char axi
                        " and " + format_number(above) + " m (or move [scene] lattice_origin)");
 }
 
-Region read_region(const toml::table& table, const std::string& label, const std::string& source, double dx,
+/// A `shape = "particles"` entry: its `file` (relative to the scene file's folder; recorded as an
+/// absolute path, so that a checkpoint's scene finds it), one region per material it names.
+std::vector<Region> read_particles_region(const TableReader& t, const toml::table& table, const std::string& label,
+                                          const std::string& source, double dx,
+                                          const std::vector<std::string>& materials, toml::table& resolved) {
+  if (t.has("material")) t.fail("material", "is given by the particle file's region column (shape = \"particles\")");
+  t.accept({"file"});
+  const toml::node* node = table.get("file");
+  if (!node || !node->is_string()) t.fail("file", "must be given as a string: the CSV file of the particles (x,y,region)");
+  const std::string name = **node->as_string();
+  std::filesystem::path file(name);
+  if (file.is_relative()) file = std::filesystem::path(source).parent_path() / file;
+  file = std::filesystem::absolute(file).lexically_normal();
+  resolved.insert("file", file.string());
+  t.reject_unknown_keys();
+  return read_particle_file(file.string(), "[" + label + "]", dx, materials);
+}
+
+std::vector<Region> read_region(const toml::table& table, const std::string& label, const std::string& source, double dx,
                    Vec2 origin, const std::vector<std::string>& materials, toml::table& resolved) {
   const TableReader t(table, source, label);
   const std::string where = source + ": [" + label + "]";
   Region region;
   region.name = "[" + label + "]";
-  const std::string shape = t.choice("shape", {"box", "polygon"});
+  const std::string shape = t.choice("shape", {"box", "polygon", "particles"});
   resolved.insert("shape", shape);
+  if (shape == "particles") return read_particles_region(t, table, label, source, dx, materials, resolved);
   if (shape == "box") {
     region.shape = Region::Shape::Box;
     t.accept({"min", "max"});
@@ -119,7 +141,7 @@ Region read_region(const toml::table& table, const std::string& label, const std
   }
   if (!region.material.empty()) resolved.insert("material", region.material);
   t.reject_unknown_keys();
-  return region;
+  return {region};
 }
 
 Wall read_wall(const toml::table& table, const std::string& label, const std::string& source, toml::table& resolved) {
@@ -192,7 +214,8 @@ ReadLayout read_layout(const toml::table& root, const std::string& source, doubl
   out.layout.lattice_origin = origin;
   for (const auto& [table, label] : tables_of(root, source, "regions")) {
     toml::table r;
-    out.layout.regions.push_back(read_region(*table, label, source, spacing, origin, materials, r));
+    for (Region& region : read_region(*table, label, source, spacing, origin, materials, r))
+      out.layout.regions.push_back(std::move(region));
     out.regions.push_back(std::move(r));
   }
   if (out.layout.regions.empty()) throw ParameterError(source + ": no soil: give [[regions]] or the [scene] column keys");

@@ -16,11 +16,11 @@ namespace soilsph::sph {
 /// The selectable output fields of a frame (`[output] fields` in a scene). Each name is the HDF5
 /// dataset (and XDMF attribute) it writes, except `stress`, which writes the four components
 /// sxx, syy, szz, sxy together. The positions are always written (they are the XDMF geometry).
-enum class Field : std::uint8_t { velocity, speed, stress, p, q, plastic_strain, density, layer };
+enum class Field : std::uint8_t { velocity, speed, stress, p, q, plastic_strain, density, layer, material };
 
 /// The field names in the order of enum Field (and of the datasets in a frame).
-inline constexpr std::array<std::string_view, 8> kFieldNames{"velocity",       "speed",   "stress", "p", "q",
-                                                             "plastic_strain", "density", "layer"};
+inline constexpr std::array<std::string_view, 9> kFieldNames{"velocity", "speed",   "stress", "p",       "q",
+                                                             "plastic_strain", "density", "layer", "material"};
 
 /// The Field called `name`, or none if no field has that name.
 constexpr std::optional<Field> field_named(std::string_view name) {
@@ -62,6 +62,7 @@ struct Frame {
   std::span<const double> plastic_strain;      ///< accumulated equivalent plastic strain
   std::span<const double> density;             ///< kg/m^3
   std::span<const int> layer;                  ///< horizontal layer id (0,1,2,... from the bottom)
+  std::span<const int> material;               ///< index of the particle's material (summary.json "materials")
 };
 
 }  // namespace soilsph::sph

@@ -68,7 +68,7 @@ struct XdmfField {
   int precision;               ///< bytes
   int components;
 };
-constexpr std::array<XdmfField, 11> kFields{
+constexpr std::array<XdmfField, 12> kFields{
     {{Field::velocity, "velocity", "Vector", "Float", 8, 3},
      {Field::stress, "sxx", "Scalar", "Float", 8, 1},
      {Field::stress, "syy", "Scalar", "Float", 8, 1},
@@ -79,6 +79,7 @@ constexpr std::array<XdmfField, 11> kFields{
      {Field::plastic_strain, "plastic_strain", "Scalar", "Float", 8, 1},
      {Field::density, "density", "Scalar", "Float", 8, 1},
      {Field::layer, "layer", "Scalar", "Int", 4, 1},
+     {Field::material, "material", "Scalar", "Int", 4, 1},
      {Field::speed, "speed", "Scalar", "Float", 8, 1}}};
 
 /// Root dataset of the vertex indices 0..n−1 that make each of n particles a Polyvertex cell: without
@@ -215,6 +216,7 @@ void FrameWriter::write(const Frame& frame) {
   if (has(Field::plastic_strain)) check_size(frame.plastic_strain.size());
   if (has(Field::density)) check_size(frame.density.size());
   if (has(Field::layer)) check_size(frame.layer.size());
+  if (has(Field::material)) check_size(frame.material.size());
   const std::filesystem::path path = frame_path(frames_.size());
   const std::string where = path.string() + ":/";
   // Room first, so that a full disk is one clear message rather than HDF5's failure half-way.
@@ -246,6 +248,8 @@ void FrameWriter::write(const Frame& frame) {
     if (has(Field::density)) hdf5::write_doubles(file, "density", frame.density, where);
     if (has(Field::layer))
       write_dataset(file, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
+    if (has(Field::material))
+      write_dataset(file, "material", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.material.data(), where);
   });
   const std::filesystem::path vertices = h5_path_.parent_path() / kFrameFolder / (vertices_name(n) + ".h5");
   if (!std::filesystem::exists(vertices)) {

@@ -130,6 +130,12 @@ std::string summary_json(const Summary& s) {
   field("resumed_from", s.resumed_from >= 0 ? number(s.resumed_from) : "null");
   field("version", quoted(s.version));
   field("command_line", quoted(s.command_line));
+  std::string materials = "[";
+  for (std::size_t k = 0; k < s.materials.size(); ++k)
+    materials += std::string(k ? ",\n    " : "\n    ") + "{\"name\": " + quoted(s.materials[k].name) + ", \"model\": " +
+                 quoted(s.materials[k].model) + ", \"integrator\": " + quoted(s.materials[k].integrator) +
+                 ", \"particles\": " + std::to_string(s.materials[k].particles) + "}";
+  field("materials", materials + (s.materials.empty() ? "]" : "\n  ]"));
   if (!s.inputs_json.empty()) field("inputs", indented(s.inputs_json));
   // Nested values come last, after the flat figures (readers that scan the figures stop at "inputs").
   if (!s.boundaries.empty()) field("boundaries", boundaries_json(s.boundaries));

@@ -13,7 +13,14 @@ namespace soilsph::sph {
 
 /// What a run reports at its end; SI units, angles in degrees.
 struct Summary {
-  std::string model, integrator;
+  /// One of the scene's materials: its [materials.NAME] name ("" for [material]), model, integrator
+  /// and soil particles; the frames' `material` field is its index in Summary::materials.
+  struct Material {
+    std::string name, model, integrator;
+    std::size_t particles = 0;
+  };
+  std::string model, integrator;  ///< several materials: each distinct one, joined by " + "
+  std::vector<Material> materials;
   std::size_t particles = 0, boundary_particles = 0, steps = 0;
   double end_time = 0, wall_seconds = 0, particle_steps_per_second = 0, runout_m = 0, height_m = 0,
          repose_angle_deg = 0, max_speed_end = 0, kinetic_energy_end = 0, particle_spacing = 0,

@@ -379,9 +379,11 @@ void check_collapse_output(const Case& c, const fs::path& dir, const Outcome& o,
   }
   std::stringstream s;
   s << in.rdbuf();
-  // The figures are flat; the nested "inputs" object (the scene as run) comes last and is left out.
+  // The figures are flat; the nested "materials" list and "inputs" object (the scene as run) come
+  // last and are left out.
   const std::string text = s.str();
-  const std::map<std::string, std::string> j = flat_json(text.substr(0, text.find("\"inputs\":")));
+  const std::map<std::string, std::string> j =
+      flat_json(text.substr(0, std::min(text.find("\"materials\":"), text.find("\"inputs\":"))));
   const auto number = [&](const std::string& key) -> std::optional<double> {
     const auto it = j.find(key);
     if (it == j.end()) return std::nullopt;

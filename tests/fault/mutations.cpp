@@ -544,7 +544,7 @@ std::vector<Spec> make_specs() {
                false,
                {"[]", "[\"p\", \"p\"]", "[\"bogus\"]", "[1]", "\"p\"", "[\"p\", \"q\"]"},
                {},
-               {"velocity", "speed", "stress", "p", "q", "plastic_strain", "density", "layer"}});
+               {"velocity", "speed", "stress", "p", "q", "plastic_strain", "density", "layer", "material"}});
   return s;
 }
 

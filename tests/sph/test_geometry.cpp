@@ -164,7 +164,7 @@ TEST_CASE("geometry keys are validated with the file, the table and the key name
                     Contains("[scene] gravity must be [x, y]"));
   CHECK_THROWS_WITH(with("lattice_origin = [0.0, 0.0]", "column_width = 0.04"),
                     Contains("[scene] column_width: and [[regions]] exclude each other"));
-  // A second material in one scene is refused until several are supported.
+  // A second material in one scene: each region keeps its own (tests/sph/test_materials.cpp).
   std::string two = kColumnAsLayout + R"(
 [materials.clay]
 model = "linear-elastic"
@@ -177,7 +177,9 @@ min = [-0.001, 0.061]
 max = [0.041, 0.081]
 material = "clay"
 )";
-  CHECK_THROWS_WITH(test::scene_from_text(two), Contains("[regions #2] material = \"clay\" is a second material"));
+  const Scene both = test::scene_from_text(two);
+  CHECK(both.material_names == std::vector<std::string>{"sand", "clay"});
+  CHECK(both.region_material == std::vector<int>{0, 1});
 }
 
 TEST_CASE("polygons: simple, oriented, and filled with the nodes inside", "[geometry]") {

@@ -45,11 +45,11 @@ TEST_CASE("[output] fields selects the frame datasets: default all, --set, valid
   CHECK(test::shipped_scene("collapse-dp", {R"(output.fields=["p","q"])"}).output.fields ==
         FieldSet().insert(Field::p).insert(Field::q));
   CHECK(test::shipped_scene("collapse-dp", {R"(output.fields=["velocity", "speed", "stress", "p", "q",)"
-                                            R"( "plastic_strain", "density", "layer"])"})
+                                            R"( "plastic_strain", "density", "layer", "material"])"})
             .output.fields == FieldSet::all());
   CHECK(test::shipped_scene("collapse-dp", {"output.fields=[]"}).output.fields.empty());  // positions only
   const auto allowed = Contains(R"((allowed: "velocity", "speed", "stress", "p", "q", "plastic_strain", )"
-                                R"("density", "layer"))");
+                                R"("density", "layer", "material"))");
   CHECK_THROWS_WITH(
       test::shipped_scene("collapse-dp", {R"(output.fields=["p","sxx"])"}),
       Contains(R"(--set output.fields=["p","sxx"]: [output] fields)") && Contains(R"("sxx" is not allowed)") &&

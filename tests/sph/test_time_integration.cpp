@@ -25,6 +25,7 @@ struct FreeFall {
                     false,
                     RestCriterion{},
                     Domain{},
+                    0.0,
                     0.0};
   FreeFall() {
     setup.momentum.gravity = {0.0, -9.81};

@@ -13,7 +13,7 @@ import h5py
 import numpy as np
 
 ATTRIBUTES = {"velocity": 3, "speed": 1, "sxx": 1, "syy": 1, "szz": 1, "sxy": 1, "p": 1, "q": 1,
-              "plastic_strain": 1, "density": 1, "layer": 1}
+              "plastic_strain": 1, "density": 1, "layer": 1, "material": 1}
 # [output] fields names -> datasets ("stress" is the four components).
 FIELD_DATASETS = {name: [name] for name in ATTRIBUTES if name not in ("sxx", "syy", "szz", "sxy")}
 FIELD_DATASETS["stress"] = ["sxx", "syy", "szz", "sxy"]

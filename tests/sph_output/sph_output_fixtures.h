@@ -11,7 +11,7 @@ namespace soilsph::test {
 struct SyntheticParticles {
   double time;
   std::vector<double> x, y, vx, vy, sxx, syy, szz, sxy, p, q, eps, density;
-  std::vector<int> layer;
+  std::vector<int> layer, material;
 
   SyntheticParticles(std::size_t n, double t) : time(t) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -29,9 +29,10 @@ struct SyntheticParticles {
       eps.push_back(1e-3 * k * k);
       density.push_back(2000.0 + k);
       layer.push_back(static_cast<int>(i / 3));
+      material.push_back(static_cast<int>(i % 2));
     }
   }
-  sph::Frame frame() const { return {time, x, y, vx, vy, sxx, syy, szz, sxy, p, q, eps, density, layer}; }
+  sph::Frame frame() const { return {time, x, y, vx, vy, sxx, syy, szz, sxy, p, q, eps, density, layer, material}; }
 };
 
 }  // namespace soilsph::test

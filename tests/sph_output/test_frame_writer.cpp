@@ -187,7 +187,7 @@ TEST_CASE("the XDMF index lists every frame with its time and every dataset with
     H5Sclose(space);
     H5Dclose(set);
   }
-  CHECK(items == 2 * 13);  // topology, geometry and 11 attributes per frame
+  CHECK(items == 2 * 14);  // topology, geometry and 12 attributes per frame
   CHECK(xdmf.find("NumberOfElements=\"5\"") != std::string::npos);
   CHECK(xdmf.find("NumberOfElements=\"9\"") != std::string::npos);
   std::filesystem::remove_all(dir);
@@ -211,11 +211,12 @@ TEST_CASE("only the selected fields are written to frames.h5 and listed in frame
     Names datasets;  ///< besides position
   };
   const Names all{"velocity", "speed",          "sxx",     "syy",  "szz", "sxy", "p",
-                  "q",        "plastic_strain", "density", "layer"};
+                  "q",        "plastic_strain", "density", "layer", "material"};
   const std::vector<Case> cases{
       {FieldSet::all(), all},
       {FieldSet().insert(Field::p).insert(Field::q), {"p", "q"}},
       {FieldSet().insert(Field::stress).insert(Field::layer), {"sxx", "syy", "szz", "sxy", "layer"}},
+      {FieldSet().insert(Field::material), {"material"}},
       {FieldSet().insert(Field::speed).insert(Field::plastic_strain).insert(Field::density),
        {"speed", "plastic_strain", "density"}},
       {FieldSet().insert(Field::velocity), {"velocity"}},
@@ -238,6 +239,7 @@ TEST_CASE("only the selected fields are written to frames.h5 and listed in frame
     if (!test.fields.contains(Field::plastic_strain)) sparse.plastic_strain = {};
     if (!test.fields.contains(Field::density)) sparse.density = {};
     if (!test.fields.contains(Field::layer)) sparse.layer = {};
+    if (!test.fields.contains(Field::material)) sparse.material = {};
     if (!test.fields.contains(Field::velocity) && !test.fields.contains(Field::speed))
       sparse.vx = sparse.vy = {};
     writer.write(a.frame());
@@ -253,6 +255,8 @@ TEST_CASE("only the selected fields are written to frames.h5 and listed in frame
       CHECK(read_dataset<double>(file.id, "/frame_000001/p", H5T_NATIVE_DOUBLE, dims) == b.p);
     if (test.fields.contains(Field::layer))
       CHECK(read_dataset<int>(file.id, "/frame_000001/layer", H5T_NATIVE_INT, dims) == b.layer);
+    if (test.fields.contains(Field::material))
+      CHECK(read_dataset<int>(file.id, "/frame_000001/material", H5T_NATIVE_INT, dims) == b.material);
     if (test.fields.contains(Field::speed)) {
       const auto speed = read_dataset<double>(file.id, "/frame_000001/speed", H5T_NATIVE_DOUBLE, dims);
       for (std::size_t i = 0; i < speed.size(); ++i) CHECK(speed[i] == Approx(std::hypot(b.vx[i], b.vy[i])));

@@ -34,7 +34,7 @@ void write_run(const std::filesystem::path& dir, const std::string& model, doubl
   const std::size_t n = x0.size();
   std::vector<double> xf(n), yf(n), x(n), y(n), vx(n), vy(n), sxx(n), syy(n), szz(n), sxy(n, 0.0), p(n), q(n),
       eps(n), density(n, kDensity);
-  std::vector<int> layer(n);
+  std::vector<int> layer(n), material(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const double xi = (kWidth - x0[i]) / kWidth, eta = y0[i] / kHeight;
     xf[i] = kWidth - kWidth * xi * (1 + spread * (1 - eta));
@@ -57,7 +57,7 @@ void write_run(const std::filesystem::path& dir, const std::string& model, doubl
       q[i] = std::abs(syy[i] - sxx[i]);  // axisymmetric about y: q = |σ_yy − σ_xx|
       eps[i] = s * spread * (1 - y0[i] / kHeight);
     }
-    writer.write({t, x, y, vx, vy, sxx, syy, szz, sxy, p, q, eps, density, layer});
+    writer.write({t, x, y, vx, vy, sxx, syy, szz, sxy, p, q, eps, density, layer, material});
   }
   const DepositMetrics deposit = measure_deposit(x, y, kWidth, kSpacing);
   CHECK(deposit.runout_m == Approx(kWidth * (1 + spread)).epsilon(1e-12));
