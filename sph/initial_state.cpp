@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "sph/geometry/lattice.h"
+#include "sph/geometry/surface.h"
 #include <sstream>
 
 namespace soilsph::sph {
@@ -26,11 +27,11 @@ bool inside_yield_surface(const Model& model, const State& s) {
   }
 }
 
-/// σ_v = −ρ|g| (surface − height), the weight of the soil above the particle's height along −g, and
-/// K0 σ_v across: σ = σ_v (K0 (I − ĝĝ) + ĝĝ) in the plane, σzz = K0 σ_v. With ĝ = (0, −1) these are
-/// σyy = σ_v, σxx = σzz = K0 σ_v, σxy = 0 exactly.
-Mat3 geostatic_stress(const Geometry& g, double density, double k0, double height) {
-  const double vertical = -density * g.gravity_magnitude() * (g.surface_level - height);
+/// σ_v = −ρ|g| (surface − height), the weight of the soil between the particle's height and the free
+/// surface above it along −g, and K0 σ_v across: σ = σ_v (K0 (I − ĝĝ) + ĝĝ) in the plane,
+/// σzz = K0 σ_v. With ĝ = (0, −1) these are σyy = σ_v, σxx = σzz = K0 σ_v, σxy = 0 exactly.
+Mat3 geostatic_stress(const Geometry& g, double density, double k0, double surface, double height) {
+  const double vertical = -density * g.gravity_magnitude() * (surface - height);
   const Vec2 d = g.down();
   Mat3 sigma = Mat3::Zero();
   sigma(0, 0) = vertical * (k0 * (1.0 - d.x * d.x) + d.x * d.x);
@@ -38,6 +39,14 @@ Mat3 geostatic_stress(const Geometry& g, double density, double k0, double heigh
   sigma(0, 1) = sigma(1, 0) = vertical * (k0 * (0.0 - d.x * d.y) + d.x * d.y) + 0.0;  // + 0: no −0 shear
   sigma(2, 2) = k0 * vertical;
   return sigma;
+}
+
+/// The free surface above a point: flat at the top of the outline (today's column), or the local
+/// top of the soil on the vertical through it (geometry/surface.h); never below the point itself.
+double free_surface(const Scene& scene, Vec2 p) {
+  const Geometry& g = scene.geometry;
+  if (scene.initial.stress == InitialStress::FlatSurface) return g.surface_level;
+  return std::max(surface_height_above(g.layout.regions, g.down(), p), g.height(p));
 }
 
 /// The lowest point of the soil's outline along −g: layer ids count from it.
@@ -98,8 +107,9 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
         for (std::size_t i = 0; i < p.soil_count; ++i) {
           State& s = p.state[i];
           s = State{};
+          const Vec2 at{p.x[i], p.y[i]};
           s.stress = geostatic_stress(scene.geometry, rho, scene.initial.lateral_stress_ratio,
-                                      scene.geometry.height({p.x[i], p.y[i]}));
+                                      free_surface(scene, at), scene.geometry.height(at));
           s.pc = initial_preconsolidation(model, s.stress, scene.initial);
           if (!inside_yield_surface(model, s)) {
             std::ostringstream msg;
@@ -119,7 +129,8 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
       [&](const auto& model) {
         const auto admissible = [&](double k0) {
           State s;
-          s.stress = geostatic_stress(geometry, model.params().density, k0, geometry.base_level);
+          s.stress = geostatic_stress(geometry, model.params().density, k0, geometry.surface_level,
+                                      geometry.base_level);
           s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0});
           return inside_yield_surface(model, s);
         };
@@ -134,7 +145,7 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
 double largest_initial_pressure(const Scene& scene) {
   const Mat3 base =
       geostatic_stress(scene.geometry, density(scene.material), scene.initial.lateral_stress_ratio,
-                       scene.geometry.base_level);
+                       scene.geometry.surface_level, scene.geometry.base_level);
   return mean_pressure(base);
 }
 
