@@ -269,7 +269,11 @@ def plot_cut(rows, out, unit):
     fig.savefig(out / "cut.png", dpi=110)
 
 
-SLOPE = {"c": 40.0, "phi": 25.0}  # data/scenes/slope.toml, [material] cohesion and friction_angle
+def slope_strength():
+    """The shipped slope's Mohr-Coulomb c (Pa) and phi (degrees), read from data/scenes/slope.toml."""
+    import tomllib
+    material = tomllib.loads((ROOT / "data" / "scenes" / "slope.toml").read_text())["material"]
+    return material["cohesion"], material["friction_angle"]
 
 
 def bishop(extra=()):
@@ -295,8 +299,9 @@ def largest_displacement(folder):
 
 
 def slope_run(args, spacing, factor, out):
-    c = SLOPE["c"] / factor
-    phi = math.degrees(math.atan(math.tan(math.radians(SLOPE["phi"])) / factor))
+    c0, phi0 = slope_strength()
+    c = c0 / factor
+    phi = math.degrees(math.atan(math.tan(math.radians(phi0)) / factor))
     name = f"slope-{1000 * spacing:g}mm-F{factor:.4f}"
     r = run(name, "slope", [f"scene.particle_spacing={spacing}", f"scene.end_time={args.end_time}",
                             f"material.cohesion={c}", f"material.friction_angle={phi}",
@@ -371,10 +376,10 @@ def plot_slope(rows, results, circle, fos, out):
     fig.colorbar(sc, ax=ax, label=f"displacement at t = {r['end_time']:g} s (mm)")
     t = np.linspace(0, 2 * np.pi, 721)
     xs, ys = circle["xc"] + circle["r"] * np.cos(t), circle["yc"] + circle["r"] * np.sin(t)
-    keep = (ys <= 0.05 + 1e-9) & (xs >= circle["x1"] - 1e-9) & (xs <= circle["x2"] + 1e-9)
+    keep = (ys <= circle["yc"]) & (xs >= circle["x1"] - 1e-9) & (xs <= circle["x2"] + 1e-9)  # the slip arc
     ax.plot(np.where(keep, xs, np.nan), np.where(keep, ys, np.nan), "r-", lw=1.5,
             label=f"Bishop's critical circle (FoS = {fos:.2f})")
-    ax.set(aspect="equal", xlabel="x (m)", ylabel="y (m)", xlim=(-0.02, 0.26), ylim=(-0.005, 0.06),
+    ax.set(aspect="equal", xlabel="x (m)", ylabel="y (m)", xlim=(-0.02, 0.29), ylim=(-0.005, 0.07),
            title=f"slope.toml at {1000 * finest:g} mm, F = {r['F']:.3f} (critical F in [{critical[2]:.3f}, "
                  f"{critical[3]:.3f}]): displacement, drawn at the initial positions")
     ax.title.set_fontsize(9)
