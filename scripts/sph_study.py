@@ -7,7 +7,7 @@ Run with Debian's /usr/bin/python3 (matplotlib, numpy).
     scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
     scripts/sph_study.py cut        [--out DIR] [--heights 3,4,...] [--spacings 2,1]
-    scripts/sph_study.py slope      [--out DIR] [--spacings 4,2] [--rounds 3] [--end-time 0.5]
+    scripts/sph_study.py slope      [--out DIR] [--spacings 4,2] [--rounds 3] [--end-time 0.5] [--factors F,...]
 
 Every run goes to the scene's end time or to rest (the scene's stop_at_rest). Runs go `--jobs` at a
 time with one thread each (results do not depend on the thread count; wall times are one core's).
@@ -30,7 +30,7 @@ slope: the factor of safety of data/scenes/slope.toml by strength reduction: for
   match), and the run goes to --end-time without stopping at rest. It fails if the largest
   displacement of a soil particle at the end exceeds --fail-spacings (3) spacings. The bracket starts
   at [1, 2 FoS_Bishop] (each end checked) and shrinks threefold per round (two runs at its thirds, in
-  parallel). Writes DIR/slope.csv (every run), DIR/slope.md (the critical F and its bracket per
+  parallel); --factors runs the given factors only (a finer spacing near a known bracket). Writes DIR/slope.csv (every run), DIR/slope.md (the critical F and its bracket per
   spacing) and, with --figure, docs-style DIR/slope.png: the displacement field of the failing run
   nearest above the critical F with the Bishop circle (scripts/slope_bishop.py) drawn over it.
 """
@@ -325,7 +325,17 @@ def slope(args):
     fos, circle = bishop()
     print(f"FoS_Bishop = {fos:.4f}, critical circle {circle}")
     rows, results = [], []
-    for spacing in [float(s) / 1000 for s in args.spacings.split(",")]:
+    if args.factors:  # given factors only, no bisection: the bracket is what they show
+        factors = [float(f) for f in args.factors.split(",")]
+        for spacing in [float(s) / 1000 for s in args.spacings.split(",")]:
+            with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+                runs = list(pool.map(lambda f: slope_run(args, spacing, f, out), factors))
+            rows += runs
+            stands = [r["F"] for r in runs if not r["fails"]]
+            fails = [r["F"] for r in runs if r["fails"]]
+            lo, hi = max(stands, default=float("nan")), min(fails, default=float("nan"))
+            results.append((spacing, 0.5 * (lo + hi), lo, hi, "given factors"))
+    for spacing in [] if args.factors else [float(s) / 1000 for s in args.spacings.split(",")]:
         lo, hi = 1.0, 2.0 * fos
         with ThreadPoolExecutor(max_workers=args.jobs) as pool:
             ends = list(pool.map(lambda f: slope_run(args, spacing, f, out), (lo, hi)))
@@ -411,6 +421,7 @@ def main():
             p.add_argument("--fail-spacings", type=float, default=3.0,
                            help="fails if the largest displacement exceeds this many spacings")
             p.add_argument("--figure", action="store_true", help="draw DIR/slope.png")
+            p.add_argument("--factors", default="", help="run these F only (e.g. 1.46,1.53,1.61), no bisection")
         else:
             p.add_argument("--spacing", type=float, default=2.0 if name == "cfl" else 1.0, help="mm")
         if name == "cfl":
