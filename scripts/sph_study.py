@@ -7,6 +7,7 @@ Run with Debian's /usr/bin/python3 (matplotlib, numpy).
     scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
     scripts/sph_study.py cut        [--out DIR] [--heights 3,4,...] [--spacings 2,1]
+    scripts/sph_study.py slope      [--out DIR] [--spacings 4,2] [--rounds 3] [--end-time 0.5] [--factors F,...]
 
 Every run goes to the scene's end time or to rest (the scene's stop_at_rest). Runs go `--jobs` at a
 time with one thread each (results do not depend on the thread count; wall times are one core's).
@@ -24,6 +25,14 @@ cut: the vertical cut (data/scenes/vertical-cut.toml) at each height and spacing
   stopping at rest (a marginal cut creeps below the rest speed); the face displacement W - min x at
   the end against H in units of (c/gamma) tan(45 + phi/2), between the limit-analysis bounds 2 and
   3.83. Writes DIR/cut.csv, DIR/cut.md and DIR/cut.png (face displacement against time per height).
+slope: the factor of safety of data/scenes/slope.toml by strength reduction: for a factor F the
+  Mohr-Coulomb strength is reduced to c/F and tan(phi)/F (the D-P cone follows from its plane-strain
+  match), and the run goes to --end-time without stopping at rest. It fails if the largest
+  displacement of a soil particle at the end exceeds --fail-spacings (3) spacings. The bracket starts
+  at [1, 2 FoS_Bishop] (each end checked) and shrinks threefold per round (two runs at its thirds, in
+  parallel); --factors runs the given factors only (a finer spacing near a known bracket). Writes DIR/slope.csv (every run), DIR/slope.md (the critical F and its bracket per
+  spacing) and, with --figure, docs-style DIR/slope.png: the displacement field of the failing run
+  nearest above the critical F with the Bishop circle (scripts/slope_bishop.py) drawn over it.
 """
 import argparse
 import csv
@@ -260,11 +269,141 @@ def plot_cut(rows, out, unit):
     fig.savefig(out / "cut.png", dpi=110)
 
 
+def slope_strength():
+    """The shipped slope's Mohr-Coulomb c (Pa) and phi (degrees), read from data/scenes/slope.toml."""
+    import tomllib
+    material = tomllib.loads((ROOT / "data" / "scenes" / "slope.toml").read_text())["material"]
+    return material["cohesion"], material["friction_angle"]
+
+
+def bishop(extra=()):
+    """FoS_Bishop and the critical circle of the shipped slope (scripts/slope_bishop.py)."""
+    done = subprocess.run([sys.executable, str(ROOT / "scripts" / "slope_bishop.py"),
+                           str(ROOT / "data" / "scenes" / "slope.toml"), *extra], capture_output=True, text=True,
+                          check=True)
+    lines = done.stdout.splitlines()
+    fos = float(lines[1].split("=")[1])
+    numbers = [float(t.strip("(),m;")) for t in lines[2].replace(",", " ").split() if t.strip("(),m;")
+               .replace(".", "", 1).replace("-", "", 1).isdigit()]
+    return fos, {"xc": numbers[0], "yc": numbers[1], "r": numbers[2], "x1": numbers[3], "x2": numbers[4]}
+
+
+def largest_displacement(folder):
+    """The largest displacement of a soil particle between the first and the last frame (m)."""
+    import h5py
+    import numpy as np
+    with h5py.File(folder / "frames.h5") as f:
+        frames = sorted(k for k in f.keys() if k.startswith("frame_"))
+        first, last = f[frames[0]]["position"][:], f[frames[-1]]["position"][:]
+    return float(np.max(np.hypot(*(last - first).T[:2])))
+
+
+def slope_run(args, spacing, factor, out):
+    c0, phi0 = slope_strength()
+    c = c0 / factor
+    phi = math.degrees(math.atan(math.tan(math.radians(phi0)) / factor))
+    name = f"slope-{1000 * spacing:g}mm-F{factor:.4f}"
+    r = run(name, "slope", [f"scene.particle_spacing={spacing}", f"scene.end_time={args.end_time}",
+                            f"material.cohesion={c}", f"material.friction_angle={phi}",
+                            "output.fields=[\"velocity\"]", f"output.frame_interval={args.end_time / 10}"] + args.set,
+            out, args.reuse)
+    r.update({"spacing_m": spacing, "F": factor, "cohesion_Pa": c, "friction_angle_deg": phi})
+    if r["status"] == "ok":
+        r["largest_displacement_m"] = largest_displacement(out / "runs" / name)
+        r["fails"] = r["largest_displacement_m"] > args.fail_spacings * spacing
+    else:
+        r["fails"] = True  # a run that blows up has not stood
+    print(f"  F = {factor:.4f}: largest displacement {1000 * r.get('largest_displacement_m', float('nan')):.2f} mm, "
+          f"{'fails' if r['fails'] else 'stands'}", flush=True)
+    return r
+
+
+def slope(args):
+    import time
+    out = pathlib.Path(args.out)
+    start = time.time()
+    fos, circle = bishop()
+    print(f"FoS_Bishop = {fos:.4f}, critical circle {circle}")
+    rows, results = [], []
+    if args.factors:  # given factors only, no bisection: the bracket is what they show
+        factors = [float(f) for f in args.factors.split(",")]
+        for spacing in [float(s) / 1000 for s in args.spacings.split(",")]:
+            with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+                runs = list(pool.map(lambda f: slope_run(args, spacing, f, out), factors))
+            rows += runs
+            stands = [r["F"] for r in runs if not r["fails"]]
+            fails = [r["F"] for r in runs if r["fails"]]
+            lo, hi = max(stands, default=float("nan")), min(fails, default=float("nan"))
+            results.append((spacing, 0.5 * (lo + hi), lo, hi, "given factors"))
+    for spacing in [] if args.factors else [float(s) / 1000 for s in args.spacings.split(",")]:
+        lo, hi = 1.0, 2.0 * fos
+        with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            ends = list(pool.map(lambda f: slope_run(args, spacing, f, out), (lo, hi)))
+            rows += ends
+            if ends[0]["fails"] or not ends[1]["fails"]:
+                results.append((spacing, float("nan"), lo, hi, "the bracket's ends do not stand and fail"))
+                continue
+            for _ in range(args.rounds):
+                thirds = (lo + (hi - lo) / 3.0, lo + 2.0 * (hi - lo) / 3.0)
+                runs = list(pool.map(lambda f: slope_run(args, spacing, f, out), thirds))
+                rows += runs
+                if runs[0]["fails"]:
+                    hi = thirds[0]
+                elif runs[1]["fails"]:
+                    lo, hi = thirds
+                else:
+                    lo = thirds[1]
+        results.append((spacing, 0.5 * (lo + hi), lo, hi, ""))
+    wall = time.time() - start
+    write_csv(rows, out / "slope.csv")
+    lines = [f"| {1000 * s:g} | {f:.3f} | [{lo:.3f}, {hi:.3f}] | {f / fos:.3f} | {note} |" for s, f, lo, hi, note in results]
+    write_markdown(out / "slope.md", f"Slope, strength reduction: FoS_Bishop = {fos:.3f}; failure: largest "
+                   f"displacement > {args.fail_spacings:g} spacings at t = {args.end_time:g} s; study wall time "
+                   f"{wall:.0f} s", "spacing (mm) | critical F | bracket | F / FoS_Bishop | note", lines)
+    if args.figure:
+        plot_slope(rows, results, circle, fos, out)
+
+
+def plot_slope(rows, results, circle, fos, out):
+    import h5py
+    import matplotlib
+    import numpy as np
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    finest = min(s for s, *_ in results)
+    critical = next(r for r in results if r[0] == finest)
+    failing = sorted((r for r in rows if r["spacing_m"] == finest and r["fails"] and r["status"] == "ok"
+                      and r["F"] >= critical[3] - 1e-9), key=lambda r: r["F"])
+    if not failing:
+        return
+    r = failing[0]
+    with h5py.File(out / "runs" / r["run"] / "frames.h5") as f:
+        frames = sorted(k for k in f.keys() if k.startswith("frame_"))
+        first, last = f[frames[0]]["position"][:], f[frames[-1]]["position"][:]
+    d = np.hypot(*(last - first).T[:2])
+    fig, ax = plt.subplots(figsize=(9, 3.2))
+    sc = ax.scatter(first[:, 0], first[:, 1], c=1000 * d, s=4, cmap="viridis")
+    fig.colorbar(sc, ax=ax, label=f"displacement at t = {r['end_time']:g} s (mm)")
+    t = np.linspace(0, 2 * np.pi, 721)
+    xs, ys = circle["xc"] + circle["r"] * np.cos(t), circle["yc"] + circle["r"] * np.sin(t)
+    keep = (ys <= circle["yc"]) & (xs >= circle["x1"] - 1e-9) & (xs <= circle["x2"] + 1e-9)  # the slip arc
+    ax.plot(np.where(keep, xs, np.nan), np.where(keep, ys, np.nan), "r-", lw=1.5,
+            label=f"Bishop's critical circle (FoS = {fos:.2f})")
+    ax.set(aspect="equal", xlabel="x (m)", ylabel="y (m)", xlim=(-0.02, 0.29), ylim=(-0.005, 0.07),
+           title=f"slope.toml at {1000 * finest:g} mm, F = {r['F']:.3f} (critical F in [{critical[2]:.3f}, "
+                 f"{critical[3]:.3f}]): displacement, drawn at the initial positions")
+    ax.title.set_fontsize(9)
+    ax.legend(loc="upper left", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "slope.png", dpi=120)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="study", required=True)
     for name, default_out in (("resolution", "results/study-resolution"), ("cfl", "results/study-cfl"),
-                              ("integrator", "results/study-integrator"), ("cut", "results/study-cut")):
+                              ("integrator", "results/study-integrator"), ("cut", "results/study-cut"),
+                              ("slope", "results/study-slope")):
         p = sub.add_parser(name)
         p.add_argument("--out", default=default_out)
         p.add_argument("--jobs", type=int, default=2, help="runs at a time, one thread each")
@@ -275,6 +414,14 @@ def main():
         elif name == "cut":
             p.add_argument("--spacings", default="2,1", help="particle spacings in mm")
             p.add_argument("--heights", default="3,4,5,5.4,5.6,5.8,6,8", help="cut heights in cm")
+        elif name == "slope":
+            p.add_argument("--spacings", default="4,2", help="particle spacings in mm")
+            p.add_argument("--rounds", type=int, default=3, help="bracket shrinks 3x per round")
+            p.add_argument("--end-time", type=float, default=0.5, help="s, each run's end")
+            p.add_argument("--fail-spacings", type=float, default=3.0,
+                           help="fails if the largest displacement exceeds this many spacings")
+            p.add_argument("--figure", action="store_true", help="draw DIR/slope.png")
+            p.add_argument("--factors", default="", help="run these F only (e.g. 1.46,1.53,1.61), no bisection")
         else:
             p.add_argument("--spacing", type=float, default=2.0 if name == "cfl" else 1.0, help="mm")
         if name == "cfl":
@@ -283,7 +430,8 @@ def main():
     if not SOILSPH.exists():
         sys.exit(f"sph_study: {SOILSPH} not found: build first (bash scripts/setup.sh)")
     pathlib.Path(args.out).mkdir(parents=True, exist_ok=True)
-    {"resolution": resolution, "cfl": cfl, "integrator": integrator, "cut": cut}[args.study](args)
+    {"resolution": resolution, "cfl": cfl, "integrator": integrator, "cut": cut,
+     "slope": slope}[args.study](args)
 
 
 if __name__ == "__main__":

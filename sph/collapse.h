@@ -3,9 +3,11 @@
 /// One collapse of a scene, from the scene to the deposit: the particles and their geostatic state,
 /// the solver setup, the time loop with each material's model chosen once per step, and the deposit
 /// measures. `soilsph collapse` and `soilsph bench collapse` both run scenes through it.
+#include <optional>
 #include <utility>
 
 #include "sph/analysis/deposit.h"
+#include "sph/gravity_loading.h"
 #include "sph/initial_state.h"
 #include "sph/solver.h"
 
@@ -13,11 +15,14 @@ namespace soilsph::sph {
 
 class Collapse {
  public:
+  /// With [initial] stress = "gravity-loading" the soil is relaxed first (gravity_loading.h).
   explicit Collapse(const Scene& scene)
       : scene_(scene),
         particles_(geostatic_particles(scene)),
         setup_(make_solver_setup(scene)),
-        groups_(material_groups(scene.materials, particles_)) {}
+        groups_(material_groups(scene.materials, particles_)) {
+    if (scene.initial.stress == InitialStress::GravityLoading) gravity_loading_ = relax_under_gravity(scene, particles_);
+  }
   /// A collapse that continues from `particles` (a checkpoint's) rather than the initial column.
   Collapse(const Scene& scene, Particles particles)
       : scene_(scene), particles_(std::move(particles)), setup_(make_solver_setup(scene)) {
@@ -47,6 +52,8 @@ class Collapse {
   }
 
   const Particles& particles() const { return particles_; }
+  /// The relaxation's outcome, if this collapse ran one (not when continuing from a checkpoint).
+  const std::optional<GravityLoadingReport>& gravity_loading() const { return gravity_loading_; }
   const SolverSetup& setup() const { return setup_; }
 
  private:
@@ -60,6 +67,7 @@ class Collapse {
   Particles particles_;
   SolverSetup setup_;
   MaterialGroups groups_;  ///< the soil's materials, each a range of particles
+  std::optional<GravityLoadingReport> gravity_loading_;
 };
 
 }  // namespace soilsph::sph

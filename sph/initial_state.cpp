@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "sph/geometry/lattice.h"
+#include "sph/geometry/surface.h"
 #include <sstream>
 
 namespace soilsph::sph {
@@ -26,11 +27,11 @@ bool inside_yield_surface(const Model& model, const State& s) {
   }
 }
 
-/// σ_v = −ρ|g| (surface − height), the weight of the soil above the particle's height along −g, and
-/// K0 σ_v across: σ = σ_v (K0 (I − ĝĝ) + ĝĝ) in the plane, σzz = K0 σ_v. With ĝ = (0, −1) these are
-/// σyy = σ_v, σxx = σzz = K0 σ_v, σxy = 0 exactly.
-Mat3 geostatic_stress(const Geometry& g, double density, double k0, double height) {
-  const double vertical = -density * g.gravity_magnitude() * (g.surface_level - height);
+/// σ_v = −ρ|g| (surface − height), the weight of the soil between the particle's height and the free
+/// surface above it along −g, and K0 σ_v across: σ = σ_v (K0 (I − ĝĝ) + ĝĝ) in the plane,
+/// σzz = K0 σ_v. With ĝ = (0, −1) these are σyy = σ_v, σxx = σzz = K0 σ_v, σxy = 0 exactly.
+Mat3 geostatic_stress(const Geometry& g, double density, double k0, double surface, double height) {
+  const double vertical = -density * g.gravity_magnitude() * (surface - height);
   const Vec2 d = g.down();
   Mat3 sigma = Mat3::Zero();
   sigma(0, 0) = vertical * (k0 * (1.0 - d.x * d.x) + d.x * d.x);
@@ -89,6 +90,14 @@ std::vector<double> overburden_density_excess(const Particles& p, const Geometry
     ++above[own];
   }
   return excess;
+}
+
+/// The free surface above a point: flat at the top of the outline (today's column), or the local
+/// top of the soil on the vertical through it (geometry/surface.h); never below the point itself.
+double free_surface(const Scene& scene, Vec2 p) {
+  const Geometry& g = scene.geometry;
+  if (scene.initial.stress == InitialStress::FlatSurface) return g.surface_level;
+  return std::max(surface_height_above(g.layout.regions, g.down(), p), g.height(p));
 }
 
 /// The lowest point of the soil's outline along −g: layer ids count from it.
@@ -164,10 +173,11 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
             if (p.material[i] != static_cast<int>(k)) continue;
             State& s = p.state[i];
             s = State{};
-            const double height = g.height({p.x[i], p.y[i]});
+            const Vec2 at{p.x[i], p.y[i]};
+            const double height = g.height(at), surface = free_surface(scene, at);
             // One material: ρ (surface − height). Several: the mean density of the soil above.
-            const double overburden = several && excess[i] != 0.0 ? rho + excess[i] / (g.surface_level - height) : rho;
-            s.stress = geostatic_stress(g, overburden, k0, height);
+            const double overburden = several && excess[i] != 0.0 ? rho + excess[i] / (surface - height) : rho;
+            s.stress = geostatic_stress(g, overburden, k0, surface, height);
             s.pc = initial_preconsolidation(model, s.stress, scene.initial);
             if (!inside_yield_surface(model, s)) {
               std::ostringstream msg;
@@ -189,8 +199,9 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
       [&](const auto& model) {
         const auto admissible = [&](double k0) {
           State s;
-          s.stress = geostatic_stress(geometry, model.params().density, k0, geometry.base_level);
-          s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0, {}});
+          s.stress = geostatic_stress(geometry, model.params().density, k0, geometry.surface_level,
+                                      geometry.base_level);
+          s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0, {}, InitialStress::FlatSurface, {}});
           return inside_yield_surface(model, s);
         };
         double lo = 0.0, hi = 1.0;  // inadmissible at lo (or lo = 0), admissible at hi
@@ -206,7 +217,7 @@ double largest_initial_pressure(const Scene& scene) {
   double rho = 0.0, k0 = 0.0;
   for (std::size_t k = 0; k < scene.materials.size(); ++k)
     rho = std::max(rho, density(scene.materials[k])), k0 = std::max(k0, scene.initial.material_lateral_stress_ratio[k]);
-  return mean_pressure(geostatic_stress(scene.geometry, rho, k0, scene.geometry.base_level));
+  return mean_pressure(geostatic_stress(scene.geometry, rho, k0, scene.geometry.surface_level, scene.geometry.base_level));
 }
 
 WallGuard wall_guard(const Scene& scene) {

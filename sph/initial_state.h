@@ -22,11 +22,12 @@ Particles build_particles(const Scene& scene);
 /// (the scene's particles as built) to `to` (a checkpoint's); throws if the counts differ.
 void copy_wall_attributes(Particles& to, const Particles& from);
 
-/// Geostatic stress for every soil particle, tension-positive, for a flat free surface at the top of
-/// the soil's outline along −g (the column: H + Δp/2, half a spacing above the top row):
+/// Geostatic stress for every soil particle, tension-positive, below the free surface that
+/// [initial] stress chooses: "flat-surface", one level at the top of the soil's outline along −g
+/// (the column: H + Δp/2, half a spacing above the top row), or "local-surface" (and the start of
+/// "gravity-loading"), the top of the soil on the particle's vertical (geometry/surface.h):
 ///   σ_v = −ρ |g| (surface − height),   σ_h = σzz = K0 σ_v,   no shear in the gravity frame,
-/// with gravity along −y σyy = σ_v, σxx = σzz = K0 σ_v, σxy = 0. (A surface that is not flat, e.g. a
-/// slope, needs the depth below the local surface: issue #12 item 3.) For MCC, p_c = max(OCR · p_c,yield, p_c,floor) with
+/// with gravity along −y σyy = σ_v, σxx = σzz = K0 σ_v, σxy = 0. For MCC, p_c = max(OCR · p_c,yield, p_c,floor) with
 /// p_c,yield = p + q²/(M² p), the p_c that puts (p, q) on the surface (eq 24): at the free surface
 /// p → 0 and p_c,yield → 0, which would leave the top without any strength, so the floor
 /// ([initial] preconsolidation_floor) bounds it. Throws ParameterError if a particle's initial

@@ -214,6 +214,24 @@ InitialConditions read_initial(const TableReader& t, const std::vector<Material>
   }
   c.overconsolidation_ratio = t.number_or("overconsolidation_ratio", 1.0, Range::closed_open(1.0, 1e3));
   c.preconsolidation_floor = t.number_or("preconsolidation_floor", 100.0, limits::stress_range(), "Pa");
+  const std::string stress = t.choice_or("stress", "flat-surface", {"flat-surface", "local-surface", "gravity-loading"});
+  c.stress = stress == "local-surface"     ? InitialStress::LocalSurface
+             : stress == "gravity-loading" ? InitialStress::GravityLoading
+                                           : InitialStress::FlatSurface;
+  if (c.stress == InitialStress::GravityLoading) {
+    // Defaults: about a tenth of critical damping of the soil's first mode at a few mm spacing
+    // (docs/scenes.md); settled at a speed of ~1e-4 sqrt(g H) and a stress drift of 1e-5 rho g H
+    // per step.
+    c.gravity_loading.damping = t.number_or("gravity_loading_damping", 0.02, Range::open(0.0, 1.0));
+    c.gravity_loading.kinetic_tolerance =
+        t.number_or("gravity_loading_kinetic_energy", 1e-8, Range::open(0.0, 1.0));
+    c.gravity_loading.stress_tolerance = t.number_or("gravity_loading_stress_change", 1e-5, Range::open(0.0, 1.0));
+    c.gravity_loading.max_time = t.number_or("gravity_loading_max_time", 2.0, Range::open_closed(0.0, 100.0), "s");
+  } else {
+    for (const char* key : {"gravity_loading_damping", "gravity_loading_kinetic_energy", "gravity_loading_stress_change",
+                            "gravity_loading_max_time"})
+      if (t.has(key)) t.fail(key, "needs stress = \"gravity-loading\"");
+  }
   return c;
 }
 

@@ -54,6 +54,21 @@ struct Geometry {
   }
 };
 
+/// [initial] stress: which free surface the geostatic stress hangs from (docs/scenes.md).
+enum class InitialStress {
+  FlatSurface,   ///< "flat-surface": one level surface at the top of the soil's outline (the column's)
+  LocalSurface,  ///< "local-surface": the top of the soil on the vertical through each particle
+  GravityLoading,  ///< "gravity-loading": local-surface K0, then relaxed under gravity (gravity_loading.h)
+};
+
+/// [initial] gravity_loading_*: the relaxation of sph/gravity_loading.h.
+struct GravityLoading {
+  double damping = 0.0;            ///< share of the soil's velocity removed every step
+  double kinetic_tolerance = 0.0;  ///< settled when kinetic energy / (M |g| H) is below it ...
+  double stress_tolerance = 0.0;   ///< ... and max |Δσ_ij| per step / (ρ |g| H) too
+  double max_time = 0.0;           ///< s of relaxation before it counts as not settling (an error)
+};
+
 /// [initial]: the geostatic state before the wall moves.
 struct InitialConditions {
   double lateral_stress_ratio;     ///< K0 = σxx/σyy = σzz/σyy (of the first material in use)
@@ -61,6 +76,8 @@ struct InitialConditions {
   double preconsolidation_floor;   ///< MCC: lower bound of the initial p_c (Pa), where p → 0
   /// K0 of each material in use (Scene::materials): the key if given, else each one's default.
   std::vector<double> material_lateral_stress_ratio;
+  InitialStress stress = InitialStress::FlatSurface;  ///< the free surface σ_v is measured from
+  GravityLoading gravity_loading{};                   ///< stress = "gravity-loading" only
 };
 
 /// [numerics]

@@ -126,6 +126,14 @@ sph::Summary describe(const sph::Scene& scene, const sph::Collapse& collapse, in
   s.command_line = invocation();
   s.inputs_json = sph::scene_json(scene);
   s.boundaries = scene.geometry.layout.walls;
+  s.initial_stress_method = scene.initial.stress == sph::InitialStress::FlatSurface    ? "flat-surface"
+                            : scene.initial.stress == sph::InitialStress::LocalSurface ? "local-surface"
+                                                                                       : "gravity-loading";
+  if (const auto& relaxed = collapse.gravity_loading()) {
+    s.relaxation_steps = static_cast<long long>(relaxed->steps);
+    s.relaxation_kinetic_energy = relaxed->kinetic_energy;
+    s.relaxation_stress_change = relaxed->stress_change;
+  }
   return s;
 }
 
@@ -171,6 +179,12 @@ void run_collapse(const CollapseOptions& o) {
   check_feasible(scene, estimate, 0.8 * physical_memory());
 
   Collapse collapse = resumed ? Collapse(scene, std::move(resumed->particles)) : Collapse(scene);
+  if (const auto& relaxed = collapse.gravity_loading())
+    std::cout << "gravity loading: settled after " << relaxed->steps << " steps (" << relaxed->time
+              << " s of relaxation): kinetic energy / (M g H) = " << relaxed->kinetic_energy << " < "
+              << scene.initial.gravity_loading.kinetic_tolerance << ", stress change per step / (rho g H) = "
+              << relaxed->stress_change << " < " << scene.initial.gravity_loading.stress_tolerance
+              << "; the run starts from the relaxed soil at rest at t = 0" << std::endl;
   if (resumed && collapse.particles().soil_count != estimate.soil_particles)
     throw std::runtime_error((dir / "checkpoint.h5").string() + " holds " +
                              std::to_string(collapse.particles().soil_count) + " soil particles; its scene has " +

@@ -128,6 +128,13 @@ std::string summary_json(const Summary& s) {
   field("complete", s.complete ? "true" : "false");
   field("stop_reason", quoted(s.stop_reason));
   field("resumed_from", s.resumed_from >= 0 ? number(s.resumed_from) : "null");
+  if (s.initial_stress_method != "flat-surface") {
+    std::string o = "{\"method\": " + quoted(s.initial_stress_method);
+    if (s.relaxation_steps >= 0)
+      o += ", \"steps\": " + std::to_string(s.relaxation_steps) + ", \"kinetic_energy\": " +
+           number(s.relaxation_kinetic_energy) + ", \"stress_change\": " + number(s.relaxation_stress_change);
+    field("initial_stress", o + "}");
+  }
   field("version", quoted(s.version));
   field("command_line", quoted(s.command_line));
   std::string materials = "[";

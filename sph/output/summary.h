@@ -41,6 +41,12 @@ struct Summary {
   std::string inputs_json;   ///< the scene as run (Scene::resolved) as a JSON object, or empty
   double resumed_from = -1;  ///< time of the checkpoint this run resumed from (s); < 0: none
   std::vector<Wall> boundaries;  ///< the scene's walls: label, kind, points and motion (pictures draw them)
+  /// "initial_stress" (written unless "flat-surface", the default, so that runs of scenes without
+  /// the key keep their summary): the [initial] stress method and, for "gravity-loading", the
+  /// relaxation's steps, kinetic energy / (M|g|H) and stress change per step / (ρ|g|H) at its end.
+  std::string initial_stress_method = "flat-surface";
+  long long relaxation_steps = -1;  ///< < 0: no relaxation ran in this process
+  double relaxation_kinetic_energy = 0, relaxation_stress_change = 0;
 };
 
 /// Writes the summary as one JSON object (numbers in shortest round-trip form, non-finite
