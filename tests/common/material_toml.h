@@ -1,6 +1,7 @@
 #pragma once
-// The paper's elastic soil (E = 1 MPa, ν = 0.3, ρ = 2000 kg/m³) as a [material] TOML table, for the
-// tests that build scenes and programmes from text (a table, so it goes after the top-level keys).
+// The paper's soils as [material] TOML tables, for the tests that build scenes, materials and
+// programmes from text (a table, so it goes after the top-level keys): elastic (E = 1 MPa, ν = 0.3,
+// ρ = 2000 kg/m³) and Drucker–Prager with Table 1's φ = 35°, c = 0, ψ = 0.
 #include <string>
 
 namespace soilsph::fixtures {
@@ -11,6 +12,17 @@ model = "linear-elastic"
 density = 2000.0
 young_modulus = 1.0e6
 poisson_ratio = 0.3
+)";
+
+inline const std::string kDruckerPragerToml = R"(
+[material]
+model = "drucker-prager"
+density = 2000.0
+young_modulus = 1.0e6
+poisson_ratio = 0.3
+friction_angle = 35.0
+cohesion = 0.0
+dilatancy_angle = 0.0
 )";
 
 }  // namespace soilsph::fixtures

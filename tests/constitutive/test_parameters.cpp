@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "constitutive/material_description.h"
+#include "../common/material_toml.h"
 #include "helpers.h"
 
 using namespace soilsph;
@@ -15,16 +16,7 @@ Material from_text(const std::string& text) {
   const toml::table root = toml::parse(text);
   return read_material(TableReader(*root["material"].as_table(), "case.toml", "material"));
 }
-const std::string kDruckerPrager = R"(
-[material]
-model = "drucker-prager"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-friction_angle = 35.0
-cohesion = 0.0
-dilatancy_angle = 0.0
-)";
+const std::string& kDruckerPrager = fixtures::kDruckerPragerToml;
 const std::string kCamClay = R"(
 [material]
 model = "modified-cam-clay"

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "helpers.h"
+#include "../common/material_toml.h"
 #include "sph/analysis/boundary_forces.h"
 #include "sph/collapse.h"
 #include "sph/output/history_writer.h"
@@ -99,16 +100,7 @@ position = [0.02, 0.02]
 name = "between-rows"
 position = [0.021, 0.03]
 kind = "point"
-)" + std::string(R"(
-[material]
-model = "drucker-prager"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-friction_angle = 35.0
-cohesion = 0.0
-dilatancy_angle = 0.0
-)"));
+)" + fixtures::kDruckerPragerToml);
   const std::vector<Sample> samples = sampled_run(scene);
   REQUIRE(!samples.empty());
   const std::vector<GaugeReading>& at_start = samples.front().gauges;
@@ -137,16 +129,7 @@ end_time = 0.01
 gravity = 9.81
 wall_withdrawal = "instant"
 )";
-  const std::string material = R"(
-[material]
-model = "drucker-prager"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-friction_angle = 35.0
-cohesion = 0.0
-dilatancy_angle = 0.0
-)";
+  const std::string& material = fixtures::kDruckerPragerToml;
   const Scene outside = test::scene_from_text(column + "[[gauges]]\nname = \"air\"\nposition = [0.02, 0.08]\n" + material);
   const Particles p = build_particles(outside);
   CHECK_THROWS_WITH(GaugeSet(outside.gauges, p, 0.004, CubicSpline(0.0052), outside.source),
