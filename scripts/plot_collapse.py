@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Pictures of an SPH collapse run of any scene (Debian's /usr/bin/python3: matplotlib, h5py, numpy).
 
-    plot_collapse.py DIR [--compare DIR2 ...] [--colour layer|material]
+    plot_collapse.py DIR [--compare DIR2 ...] [--colour layer|material] [--labels LABEL ...]
 
 reads DIR/frames.h5 and DIR/summary.json (docs/sph-output.md) and writes
   DIR/velocity_t0.05.png ... _t0.20.png  velocity magnitude at the frame nearest each time (paper Fig. 4)
@@ -347,13 +347,21 @@ def main():
                         help="other runs whose final surface profiles are overlaid in DIR/profiles.png")
     parser.add_argument("--colour", choices=("layer", "material"), default="layer",
                         help="deposit.png: colour by horizontal layer (default) or by material")
+    parser.add_argument("--labels", nargs="+", default=[], metavar="LABEL",
+                        help="names of DIR and each DIR2 in the pictures (default: the model of summary.json)")
     args = parser.parse_args()
+    if args.labels and len(args.labels) != 1 + len(args.compare):
+        parser.error(f"--labels: {len(args.labels)} labels for {1 + len(args.compare)} runs (DIR and each DIR2)")
     run = Run(args.dir)
+    if args.labels:
+        run.label = args.labels[0] + (" [INCOMPLETE RUN]" if not run.complete else "")
     plot_velocity(run)
     plot_deposit(run, args.colour)
     plot_histories(run)
     if args.compare:
         runs = [run] + [Run(d) for d in args.compare]
+        for r, label in zip(runs, args.labels):
+            r.label = label + (" [INCOMPLETE RUN]" if not r.complete else "")
         plot_profiles(runs)
         plot_compare_velocity(runs)
     written = sorted(p.name for p in run.dir.glob("*.png"))
