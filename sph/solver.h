@@ -84,7 +84,6 @@ struct SolverSetup {
 /// Derives the kernel, the time step and the stage parameters from the scene (sph/solver.cpp).
 SolverSetup make_solver_setup(const Scene& scene);
 
-/// Reusable work space of the loop (no allocation after the first step).
 /// The state inside a step at t^n, after the acceleration and before anything changes σ, v or the
 /// pairs: what the histories sample (output/history_writer.h; analysis/boundary_forces.h, gauges.h).
 struct StepSample {
@@ -95,6 +94,7 @@ struct StepSample {
   std::span<const double> vx_next, vy_next;  ///< v^{n+½}
 };
 
+/// Reusable work space of the loop (no allocation after the first step).
 struct Workspace {
   NeighbourList neighbours;
   std::vector<double> vx_next, vy_next, density_next;  ///< v^{n+½}, ρ^{n+1} while a step computes them
