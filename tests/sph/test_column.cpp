@@ -1,6 +1,6 @@
 // Whole runs at 2 mm: a column held by both walls stays at rest; the collapse runs to rest and its
 // deposit lies within bands around the scaling laws; a vertical cut stands or fails as limit analysis
-// bounds its critical height.
+// bounds its critical height; SPHinXsys's low column keeps its height.
 #include <catch2/catch.hpp>
 
 #include "helpers.h"
@@ -117,4 +117,24 @@ TEST_CASE("a vertical cut below the lower bound stands, one above the upper boun
                                                                         "scene.stop_at_rest=false"}));
   REQUIRE(all_finite(high.particles));
   CHECK(face_displacement(high.particles) > 5.0 * 0.004);
+}
+
+TEST_CASE("SPHinXsys's column (aspect ratio 0.5) keeps its height and comes to rest on a slope below phi",
+          "[column][sphinxsys]") {
+  // data/scenes/sphinxsys-column-collapse.toml at 10 mm (21 × 11 particles; 2 mm in the file). A
+  // column this low (a = H0/L0 = 0.5 < 1.15) collapses only at its front: the back keeps its height
+  // (Lube et al. 2005; SPHinXsys's own result, H∞ ≈ H0), the front spreads beyond L0 and the deposit
+  // rests before SPHinXsys's end time 0.8 s (its front is at rest from 0.52 s), sloping below φ = 21.9°.
+  const Scene scene = test::shipped_scene("sphinxsys-column-collapse", {"scene.particle_spacing=0.01"});
+  const RunResult r = run_scene(scene);
+  REQUIRE(all_finite(r.particles));
+  CHECK(r.stats.guard_corrections == 0);
+  CHECK(r.stats.stopped_at_rest);
+  CHECK(r.stats.end_time < 0.8);
+  const Particles& p = r.particles;
+  const DepositMetrics d =
+      measure_deposit(std::span(p.x.data(), p.soil_count), std::span(p.y.data(), p.soil_count), 0.2, 0.01);
+  CHECK(d.height_m == Approx(0.1).epsilon(0.01));
+  CHECK(d.runout_m > 1.5 * 0.2);
+  CHECK(d.repose_angle_deg < 21.9);
 }
