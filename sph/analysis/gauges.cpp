@@ -68,10 +68,9 @@ std::vector<GaugeReading> GaugeSet::read(const Particles& p, std::span<const dou
       const double dx = at.x - p.x[i], dy = at.y - p.y[i], r2 = dx * dx + dy * dy;
       if (r2 >= support2) continue;
       const double wv = kernel_.value(std::sqrt(r2)) * p.mass[i] / p.density[i];
-      const GaugeReading r = particle_reading(p, i, vx_next, vy_next);
       weight += wv;
-      displacement = displacement + wv * r.displacement;
-      velocity = velocity + wv * r.velocity;
+      displacement = displacement + wv * Vec2{p.x[i] - p.x0[i], p.y[i] - p.y0[i]};
+      velocity = velocity + (0.5 * wv) * Vec2{p.vx[i] + vx_next[i], p.vy[i] + vy_next[i]};
       stress += wv * p.state[i].stress;
     }
     const double inv = weight > 0.0 ? 1.0 / weight : std::numeric_limits<double>::quiet_NaN();
