@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "helpers.h"
+#include "../common/material_toml.h"
 #include "sph/diagnostics.h"
 #include "sph/gravity_loading.h"
 
@@ -37,14 +38,7 @@ kind = "free-slip"
 points = [[0.0, 0.08], [0.0, 0.0]]
 removed_at = 0.0
 )";
-const std::string kDruckerPrager = R"(
-[material]
-model = "drucker-prager"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-friction_angle = 35.0
-)";
+const std::string& kDruckerPrager = fixtures::kDruckerPragerToml;
 }  // namespace
 
 TEST_CASE("gravity loading: a box between walls settles at rho g depth and at rest", "[scene][initial][gravity]") {
