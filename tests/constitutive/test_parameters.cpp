@@ -17,16 +17,7 @@ Material from_text(const std::string& text) {
   return read_material(TableReader(*root["material"].as_table(), "case.toml", "material"));
 }
 const std::string& kDruckerPrager = fixtures::kDruckerPragerToml;
-const std::string kCamClay = R"(
-[material]
-model = "modified-cam-clay"
-density = 2000.0
-poisson_ratio = 0.3
-friction_angle = 35.0
-compression_index = 0.085
-swelling_index = 0.019
-initial_void_ratio = 0.68
-)";
+const std::string& kCamClay = fixtures::kCamClayToml;
 std::string replace(std::string text, const std::string& from, const std::string& to) {
   text.replace(text.find(from), from.size(), to);
   return text;

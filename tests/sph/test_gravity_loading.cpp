@@ -71,16 +71,7 @@ TEST_CASE("gravity loading: a box between walls settles at rho g depth and at re
 
 TEST_CASE("gravity loading: MCC's p_c follows the relaxed stress and the OCR", "[scene][initial][gravity]") {
   for (const double ocr : {1.0, 2.0}) {
-    const Scene scene = test::scene_from_text(kBox + R"(
-[material]
-model = "modified-cam-clay"
-density = 2000.0
-poisson_ratio = 0.3
-friction_angle = 35.0
-compression_index = 0.085
-swelling_index = 0.019
-initial_void_ratio = 0.68
-elasticity = "constant"
+    const Scene scene = test::scene_from_text(kBox + fixtures::kCamClayToml + R"(elasticity = "constant"
 young_modulus = 1.0e6
 )", {"initial.overconsolidation_ratio=" + std::to_string(ocr)});
     Particles p = build_particles(scene);
