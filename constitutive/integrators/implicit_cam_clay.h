@@ -22,7 +22,11 @@
 /// Unknowns: the plastic volumetric strain v = Δε_v^p (compression-positive) and Δλ; residuals: the
 /// flow rule's volumetric part r1(v, Δλ) = 0 and the yield condition f(p, q, p_c) = 0 (eq 24). For a
 /// given Δλ, v(Δλ) is found by safeguarded Newton in a bracket; the outer equation f(Δλ) = 0 by
-/// safeguarded Newton with its exact derivative, from f(0) > 0. Non-convergence throws IntegrationError.
+/// safeguarded Newton with its exact derivative, from f(0) > 0. Before that, plain Newton on both
+/// unknowns together from the first-order estimate at the entry (one evaluation per iteration instead
+/// of an inner solve per outer one) is tried and kept when it converges inside v's bracket; in the SPH
+/// collapse it does for 96 % of the returns, and the update costs 1.6–1.8× less (docs/integrators.md).
+/// Non-convergence throws IntegrationError.
 /// The consistent tangent follows from the implicit-function theorem on (r1, f), including how the
 /// entry σ_t moves with Δε: see docs/integrators.md.
 #include "constitutive/models/modified_cam_clay.h"
