@@ -116,30 +116,36 @@ TEST_CASE("implicit MCC returns tensile trials, down to a vanishing surface", "[
   }
 }
 
-TEST_CASE("implicit MCC returns an increment far larger than a tiny surface onto it, with its tangent",
+TEST_CASE("implicit MCC returns SPH-size increments from small surfaces onto them, with their tangent",
           "[integrators]") {
-  // A particle near the free surface in the SPH collapse: p_c = 0.025 Pa, on the surface on the wet
-  // side, and one step's shear of 1e-4 whose trial lies ~1e6 times the surface's size outside it.
-  // The return's fast path (Newton on both unknowns from the entry's estimate) must find the same
-  // root as the safeguarded solver: on the surface, p_c from the hardening law, and a consistent
+  // Particles near the free surface in the SPH collapse: on the surface on the wet side (p = 0.6 p_c),
+  // one step's shear and extension, which add about 0.4, 4 and 5000 times the surface's q
+  // (0.7 p_c) for p_c = 300, 3 and 0.025 Pa; the first two are solved by the return's fast path
+  // (Newton on both unknowns from the entry's estimate), the last, with its perturbations, by the
+  // safeguarded solver it falls back to (checked with a debug print when this test was written).
+  // Both must find the same root: on the surface, p_c from the hardening law, and a consistent
   // tangent that matches central differences (a solver that jumped between roots would not).
   const ModifiedCamClay mcc(with(test::table1_cam_clay_params(Elasticity::Kind::Constant), Integrator::Implicit));
-  const double K = mcc.elasticity().at(0.0).K, M = mcc.M(), pc = 0.025, p = 0.6 * pc;
-  State s;
-  s.stress = isotropic_stress(p);
-  const double q = std::sqrt(M * M * p * (pc - p));  // on the surface: q² = M² p (p_c − p)
-  s.stress(0, 1) = s.stress(1, 0) = q / std::sqrt(3.0);
-  s.pc = pc;
-  REQUIRE(std::abs(mcc.normalized_yield(s.stress, s.pc)) < 1e-12);
-  for (const Mat3& d_eps : {Mat3(diagonal(1e-4, -0.8e-4, 0.0)), Mat3(diagonal(-0.5e-4, 0.7e-4, 0.0))}) {
-    Mat3 shear = d_eps;
-    shear(0, 1) = shear(1, 0) = 0.6e-4;
-    const State next = mcc.update(s, shear, Mat3::Zero());
-    REQUIRE(next.plastic_multiplier > 0.0);
-    CHECK(std::abs(mcc.normalized_yield(next.stress, next.pc)) <= 1e-9);
-    const double plastic_volume = -shear.trace() - (mean_pressure(next.stress) - p) / K;
-    CHECK(next.pc == Approx(pc * std::exp(mcc.hardening_exponent() * plastic_volume)).epsilon(1e-9));
-    check_tangent(mcc, s, shear);
+  const double K = mcc.elasticity().at(0.0).K, M = mcc.M();
+  for (auto [pc, scale] : {std::pair{300.0, 1.0}, {3.0, 0.1}, {0.025, 1.0}}) {
+    INFO("p_c " << pc << " Pa, strain scale " << scale);
+    const double p = 0.6 * pc;
+    State s;
+    s.stress = isotropic_stress(p);
+    const double q = std::sqrt(M * M * p * (pc - p));  // on the surface: q² = M² p (p_c − p)
+    s.stress(0, 1) = s.stress(1, 0) = q / std::sqrt(3.0);
+    s.pc = pc;
+    REQUIRE(std::abs(mcc.normalized_yield(s.stress, s.pc)) < 1e-12);
+    for (const Mat3& d_eps : {Mat3(diagonal(1e-4, -0.8e-4, 0.0)), Mat3(diagonal(-0.5e-4, 0.7e-4, 0.0))}) {
+      Mat3 shear = scale * d_eps;
+      shear(0, 1) = shear(1, 0) = scale * 0.6e-4;
+      const State next = mcc.update(s, shear, Mat3::Zero());
+      REQUIRE(next.plastic_multiplier > 0.0);
+      CHECK(std::abs(mcc.normalized_yield(next.stress, next.pc)) <= 1e-9);
+      const double plastic_volume = -shear.trace() - (mean_pressure(next.stress) - p) / K;
+      CHECK(next.pc == Approx(pc * std::exp(mcc.hardening_exponent() * plastic_volume)).epsilon(1e-9));
+      check_tangent(mcc, s, shear);
+    }
   }
 }
 
