@@ -25,7 +25,7 @@
 /// safeguarded Newton with its exact derivative, from f(0) > 0. Before that, plain Newton on both
 /// unknowns together from the first-order estimate at the entry (one evaluation per iteration instead
 /// of an inner solve per outer one) is tried and kept when it converges inside v's bracket; in the SPH
-/// collapse it does for 96 % of the returns, and the update costs 1.6–1.8× less (docs/integrators.md).
+/// collapse it does for 96 % of the returns, and the update costs 1.4–1.9× less (docs/integrators.md).
 /// Non-convergence throws IntegrationError.
 /// The consistent tangent follows from the implicit-function theorem on (r1, f), including how the
 /// entry σ_t moves with Δε: see docs/integrators.md.
