@@ -280,12 +280,20 @@ class CamClayReturn {
     return (K * n_p * d_eps_v_ + 6.0 * G * T1_) / (K * n_p * n_p + 18.0 * G * T2_);
   }
 
-  /// v within the bracket solve_volume starts from at Δλ = l: r1 > 0 above max(0, 2Δλ M² max(p_t,
-  /// p_trial)) always, and r1 < 0 below min(0, −Δλ M² p_c,n) when neither p_t nor p_trial is tensile.
+  /// The bracket of v at Δλ = l that solve_volume starts from (see there); its lower end holds only
+  /// when the trial is not tensile.
+  struct VolumeBracket {
+    double lo, hi;
+    bool tensile;
+  };
+  VolumeBracket volume_bracket(double l) const {
+    return {std::min(0.0, -l * M2_ * pc_n_), std::max(0.0, 2.0 * l * M2_ * std::max(entry_.p, p_trial_)),
+            std::min(entry_.p, p_trial_) < 0.0};
+  }
+  /// v within that bracket (below its upper end, and above its lower end unless the trial is tensile).
   bool in_volume_bracket(double v, double l) const {
-    const bool tensile = std::min(entry_.p, p_trial_) < 0.0;
-    return v <= std::max(0.0, 2.0 * l * M2_ * std::max(entry_.p, p_trial_)) &&
-           (tensile || v >= std::min(0.0, -l * M2_ * pc_n_));
+    const VolumeBracket b = volume_bracket(l);
+    return v <= b.hi && (b.tensile || v >= b.lo);
   }
 
   /// v(Δλ) solving r1 = 0. The flow's weights are positive and sum to Δλ, p decreases and p_c
@@ -293,9 +301,8 @@ class CamClayReturn {
   /// v ≤ 0, negative at min(0, −Δλ M² p_c,n). A tensile trial (p < 0: constant elasticity, or below
   /// the floor) can put the root lower; the lower end is then doubled until r1 < 0 there.
   Point solve_volume(double l, double v_guess) const {
-    double lo = std::min(0.0, -l * M2_ * pc_n_);
-    double hi = std::max(0.0, 2.0 * l * M2_ * std::max(entry_.p, p_trial_));
-    if (std::min(entry_.p, p_trial_) < 0.0) {
+    auto [lo, hi, tensile] = volume_bracket(l);
+    if (tensile) {
       for (int k = 0; k < kMaxIterations && lo < 0.0 && r1(at(lo, l)) > 0.0; ++k) {
         hi = lo;
         lo *= 2.0;
