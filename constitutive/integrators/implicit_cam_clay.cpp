@@ -217,10 +217,18 @@ class CamClayReturn {
   /// dominates where the surface is tiny against the trial stress (a dilated free-surface particle:
   /// p_c ≈ 1e-8 Pa after a 100 Pa tensile trial).
   double yield_round_off(const Point& x) const {
-    constexpr double eps = std::numeric_limits<double>::epsilon();
-    const double dp = eps * (std::abs(p_n_) + std::abs(x.p) + x.Kt * (std::abs(d_eps_v_) + std::abs(x.v)));
-    return M2_ * std::abs(2.0 * x.p - x.pc) * dp + eps * yield_scale(x);
+    return M2_ * std::abs(2.0 * x.p - x.pc) * pressure_round_off(x) +
+           std::numeric_limits<double>::epsilon() * yield_scale(x);
   }
+  double pressure_round_off(const Point& x) const {
+    return std::numeric_limits<double>::epsilon() *
+           (std::abs(p_n_) + std::abs(x.p) + x.Kt * (std::abs(d_eps_v_) + std::abs(x.v)));
+  }
+  /// A point where f can vanish: q² = M² p (p_c − p) ≥ 0 needs p ≥ 0 (to round-off). Where p_c has
+  /// grown by orders of magnitude (Newton far out on exp(θv)), |f| falls below the round-off of its
+  /// enormous terms at a tensile p that no root has (a dust return once stopped at v = 13, p = −1e7
+  /// Pa, p_c = 1e143 Pa): the fast path's round-off acceptance must not take such a point.
+  bool can_be_root(const Point& x) const { return x.p >= -kRoundOffFactor * pressure_round_off(x); }
   /// |f| within kYieldTolerance of its terms or, once the root is bracketed, within its round-off.
   bool converged(const Point& x, bool bracketed) const {
     const double round_off = bracketed ? kRoundOffFactor * yield_round_off(x) : 0.0;
@@ -248,7 +256,8 @@ class CamClayReturn {
   /// |f| is within its round-off and either r1 has converged or Newton's step is below round-off of
   /// (v, Δλ) (with ∂r1/∂v ≫ 1, r1 cannot fall below ∂r1/∂v times an ulp of v); the safeguarded solver
   /// accepts the same round-off only once it has bracketed the root, so these tests apply only to an
-  /// iterate inside v's bracket (in_volume_bracket), where the round-off estimate is sane.
+  /// iterate inside v's bracket (in_volume_bracket), where the round-off estimate is sane, and where
+  /// a root can be (can_be_root).
   /// Returns nothing, and the caller falls back to the safeguarded solver, if an iterate is not
   /// finite, leaves the bracket, or has not converged after kJointIterations.
   std::optional<Point> solve_jointly(double l) const {
@@ -256,8 +265,11 @@ class CamClayReturn {
     Point x = l_entry > 0.0 ? at(l_entry * M2_ * entry_flow_p_, l_entry) : at(M2_ * volumetric_flow(at(0.0, l)), l);
     for (int it = 0; it < kJointIterations; ++it) {
       if (!std::isfinite(x.f) || !in_volume_bracket(x.v, x.l)) return std::nullopt;
-      const bool f_round_off = std::abs(x.f) <= kRoundOffFactor * yield_round_off(x);
-      if (volume_converged(x) && (converged(x, false) || f_round_off)) return x;
+      // Every test is relative to the size of f's terms, which a runaway p_c inflates: none holds
+      // where no root can be.
+      const bool root = can_be_root(x);
+      const bool f_round_off = root && std::abs(x.f) <= kRoundOffFactor * yield_round_off(x);
+      if (root && volume_converged(x) && (converged(x, false) || f_round_off)) return x;
       // d(B²f) = B² df + 2B f dB; B depends on Δλ and, through G(p), on v (dp/dv = −K_t).
       const double B2 = x.B * x.B, B_v = -x.B_G() * x.dG * x.Kt, F = B2 * x.f, r = r1(x);
       const double a = r1_v(x), b = r1_l(x);
@@ -411,7 +423,7 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Mat
   double last_step = std::numeric_limits<double>::infinity(), step_before_last = last_step;
   for (int it = 0; !converged && it < kMaxIterations; ++it) {
     x = eqs.solve_volume(l, x.v);
-    if (eqs.converged(x, std::isfinite(hi))) {
+    if (eqs.can_be_root(x) && eqs.converged(x, std::isfinite(hi))) {
       converged = true;
       break;
     }
