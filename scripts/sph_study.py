@@ -4,7 +4,7 @@
 Run with Debian's /usr/bin/python3 (matplotlib, numpy).
 
     scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--jobs 2] [--reuse]
-    scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2]
+    scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2] [--integrators shipped,implicit]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
     scripts/sph_study.py cut        [--out DIR] [--heights 3,4,...] [--spacings 2,1]
     scripts/sph_study.py slope      [--out DIR] [--spacings 4,2] [--rounds 3] [--end-time 0.5] [--factors F,...]
@@ -186,7 +186,7 @@ def cfl(args):
     values = [float(c) for c in args.cfls.split(",")]
     specs = []
     for label, scene in SCENES.items():
-        for integrator in ("shipped", "implicit"):
+        for integrator in args.integrators.split(","):
             for c in values:
                 overrides = [f"scene.particle_spacing={args.spacing / 1000}", f"numerics.cfl={c}",
                              "scene.end_time=2.0"] + args.set
@@ -426,6 +426,8 @@ def main():
             p.add_argument("--spacing", type=float, default=2.0 if name == "cfl" else 1.0, help="mm")
         if name == "cfl":
             p.add_argument("--cfls", default="0.2,0.3,0.4,0.5,0.6,0.8")
+            p.add_argument("--integrators", default="shipped,implicit",
+                           help="'shipped' (the scene's) and/or integrator names")
     args = parser.parse_args()
     if not SOILSPH.exists():
         sys.exit(f"sph_study: {SOILSPH} not found: build first (bash scripts/setup.sh)")
