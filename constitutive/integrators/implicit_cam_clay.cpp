@@ -420,6 +420,10 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Mat
   const std::optional<CamClayReturn::Point> fast = eqs.solve_jointly(l);
   bool converged = fast.has_value();
   if (fast) x = *fast;
+  // The fallback starts from the larger of the trial's estimate and the entry's (the fast path's
+  // start), which for a dust return far outside its surface is orders of magnitude closer: 7× fewer
+  // outer steps over a collapse, with the same root on every return (docs/integrators.md).
+  else l = std::max(l, eqs.entry_estimate());
   double last_step = std::numeric_limits<double>::infinity(), step_before_last = last_step;
   for (int it = 0; !converged && it < kMaxIterations; ++it) {
     x = eqs.solve_volume(l, x.v);
