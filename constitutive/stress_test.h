@@ -2,13 +2,15 @@
 /// @file
 /// The numerical-stability stress test: a reproducible random strain walk through one model with
 /// one integrator, checking after every increment that nothing is NaN/Inf, the stress is on or
-/// inside the yield surface within a tolerance, MCC p' ≥ 0 and p_c > 0, and Δλ ≥ 0.
+/// inside the yield surface within a tolerance, MCC p' ≥ 0 (relative to p_c and to the increment's
+/// own stress scale) and p_c > 0, and Δλ ≥ 0.
 /// The walk is built from segments of 1–50 increments, each with one character: any direction,
 /// extension (through the D-P apex, MCC p' → 0), compression, pure shear (towards the critical
 /// state line), or the reverse of the previous segment (unloading). Increment sizes are log-uniform
 /// in [1e-6, max_increment]; each carries a random spin of the same order. The walk restarts from
 /// a fresh random state every `restart_every` increments, after a failure, and when the state leaves
-/// the range where it means anything (|p| > 1 GPa, or MCC p_c < 1 Pa). See docs/integrators.md.
+/// the range where it means anything (|p| > 1 GPa, or MCC p_c outside 1e-9 Pa–1 GPa). A quarter of
+/// the MCC starts are free-surface "dust" (p from 1e-9 to 1 Pa). See docs/integrators.md.
 #include <cstdint>
 #include <string>
 #include <utility>

@@ -45,8 +45,8 @@ void add_stress_test_command(CLI::App& app) {
         "%g]\n",
         options->increments, static_cast<unsigned long long>(options->seed), options->max_increment);
     std::printf(
-        "# checks: finite state, normalized f <= %g, Δλ >= 0; MCC p'/p_c >= -%g and p_c > 0 "
-        "(p' compression-positive)\n",
+        "# checks: finite state, normalized f <= %g, Δλ >= 0; MCC p' >= -%g S and p_c > 0, S = the "
+        "increment's stress scale (p' compression-positive; MCC f relative to max(M p_c, S)^2)\n",
         options->yield_tolerance, options->yield_tolerance);
     std::printf("%-50s %-9s %10s %10s %9s %9s %9s %9s %8s %10s %11s %9s\n", "material", "scheme", "plastic",
                 "extension", "unloading", "apex", "p'<.01pc", "near-CSL", "failures", "violations", "max f",
@@ -61,7 +61,20 @@ void add_stress_test_command(CLI::App& app) {
                     std::string(integrator_name(scheme)).c_str(), r.plastic, r.extension, r.unloading,
                     r.at_apex, r.near_zero_pressure, r.near_critical_state, r.failures, r.violations,
                     r.max_yield, r.seconds);
-        if (!r.first_problem.empty()) std::printf("#   first problem: %s\n", r.first_problem.c_str());
+        if (!r.first_problem.empty()) {
+          std::printf("#   first problem: %s\n", r.first_problem.c_str());
+          // What reproduces it: the state before the increment and the increment (row-major 3x3, Pa
+          // tension-positive; strain and spin).
+          auto print = [](const char* label, const Mat3& m) {
+            std::printf("#     %s", label);
+            for (int i = 0; i < 9; ++i) std::printf(" %.17g", m(i / 3, i % 3));
+            std::printf("\n");
+          };
+          print("stress", r.problem_start.stress);
+          std::printf("#     p_c %.17g\n", r.problem_start.pc);
+          print("strain increment", r.problem_strain);
+          print("spin increment", r.problem_spin);
+        }
         std::fflush(stdout);
         problems += r.failures + r.violations;
       }

@@ -11,7 +11,7 @@
 namespace soilsph {
 
 namespace {
-constexpr int kMaxIterations = 100;
+constexpr int kMaxIterations = 200;
 constexpr double kYieldTolerance = 1e-13;     ///< |f| / (M p_c)² at convergence
 constexpr double kRoundOffFactor = 8.0;       ///< |f| within this many times its round-off is converged
 constexpr double kRelativeStep = 1e-15;       ///< bracket width relative to the root at convergence
