@@ -53,7 +53,7 @@ bool out_of_range(const Model&, const State& s) {
 }
 
 /// A stress scale of one increment that the result cannot inflate: the start's p_c and p and an
-/// elastic bound on the trial's change (the tangent moduli at the start and at the floor).
+/// elastic bound on the trial's change (the tangent moduli at the start).
 template <class Model>
 double increment_scale(const Model& model, const State& start, const Mat3& d_eps) {
   const double p = mean_pressure(start.stress);
@@ -68,10 +68,11 @@ std::string check(const Model& model, const State& start, const Mat3& d_eps, con
   if (!s.stress.allFinite() || !std::isfinite(s.pc) || !std::isfinite(s.plastic_multiplier))
     return "non-finite state";
   double f = model.normalized_yield(s.stress, s.pc);
+  const double scale = increment_scale(model, start, d_eps);
   if constexpr (Model::kHasPreconsolidation) {
     // f = M² p (p − p_c) + q² is computed from a trial of the increment's scale: where that is far
     // larger than the surface (dust), f carries the round-off of scale², not of (M p_c)².
-    const double surface = model.M() * s.pc, scale = increment_scale(model, start, d_eps);
+    const double surface = model.M() * s.pc;
     if (scale > surface) f *= (surface / scale) * (surface / scale);
   }
   r.max_yield = std::max(r.max_yield, f);
@@ -83,7 +84,7 @@ std::string check(const Model& model, const State& start, const Mat3& d_eps, con
     // On the surface q² = M² p (p_c − p) needs p ≥ 0, to the round-off of the increment's stress
     // scale (which the result cannot inflate: relative to the result's p_c a runaway p_c of 1e143 Pa
     // at p = −1e7 Pa would pass).
-    const double p = mean_pressure(s.stress), scale = increment_scale(model, start, d_eps);
+    const double p = mean_pressure(s.stress);
     r.min_pressure_ratio = std::min(r.min_pressure_ratio, p / s.pc);
     if (!(p >= -options.yield_tolerance * scale)) {
       std::ostringstream out;

@@ -2,8 +2,8 @@
 /// @file
 /// The numerical-stability stress test: a reproducible random strain walk through one model with
 /// one integrator, checking after every increment that nothing is NaN/Inf, the stress is on or
-/// inside the yield surface within a tolerance, MCC p' ≥ 0 (relative to p_c and to the increment's
-/// own stress scale) and p_c > 0, and Δλ ≥ 0.
+/// inside the yield surface within a tolerance, MCC p' ≥ 0 (to a tolerance of the increment's own
+/// stress scale) and p_c > 0, and Δλ ≥ 0.
 /// The walk is built from segments of 1–50 increments, each with one character: any direction,
 /// extension (through the D-P apex, MCC p' → 0), compression, pure shear (towards the critical
 /// state line), or the reverse of the previous segment (unloading). Increment sizes are log-uniform
