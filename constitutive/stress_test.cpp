@@ -1,6 +1,5 @@
 #include "constitutive/stress_test.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <random>
@@ -50,15 +49,6 @@ bool out_of_range(const Model&, const State& s) {
   if (std::abs(mean_pressure(s.stress)) > 1e9) return true;
   if constexpr (Model::kHasPreconsolidation) return s.pc < 1e-9 || s.pc > 1e9;
   return false;
-}
-
-/// A stress scale of one increment that the result cannot inflate: the start's p_c and p and an
-/// elastic bound on the trial's change (the tangent moduli at the start).
-template <class Model>
-double increment_scale(const Model& model, const State& start, const Mat3& d_eps) {
-  const double p = mean_pressure(start.stress);
-  const Moduli D = model.elasticity().at(p);
-  return std::max({start.pc, std::abs(p), 3.0 * (D.K + 2.0 * D.G) * d_eps.norm()});
 }
 
 /// Checks one updated state; returns a description of what is wrong, or "" when all is well.

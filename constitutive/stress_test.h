@@ -11,6 +11,7 @@
 /// a fresh random state every `restart_every` increments, after a failure, and when the state leaves
 /// the range where it means anything (|p| > 1 GPa, or MCC p_c outside 1e-9 Pa–1 GPa). A quarter of
 /// the MCC starts are free-surface "dust" (p from 1e-9 to 1 Pa). See docs/integrators.md.
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -56,6 +57,16 @@ struct StressTestMaterial {
   std::string label;
   Material material;
 };
+
+/// A stress scale (Pa) of one increment that its result cannot inflate: the start's p_c and p and an
+/// elastic bound on the trial's change (the tangent moduli at the start). The stress test holds MCC's
+/// p' ≥ 0 and f to tolerances of it.
+template <class Model>
+double increment_scale(const Model& model, const State& start, const Mat3& d_eps) {
+  const double p = mean_pressure(start.stress);
+  const Moduli D = model.elasticity().at(p);
+  return std::max({start.pc, std::abs(p), 3.0 * (D.K + 2.0 * D.G) * d_eps.norm()});
+}
 
 /// The materials the stress test covers: Table 1 D-P (c = 0, ψ = 0), a cohesive dilatant D-P
 /// (c = 5 kPa, ψ = 10°), Table 1 MCC with pressure-dependent and with constant elasticity, and

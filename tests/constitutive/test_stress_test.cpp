@@ -37,10 +37,10 @@ TEST_CASE("stress test: dust increments it found keep p' >= 0 and p_c bounded wi
           "[stress-test]") {
   // The first problems of `soilsph stress-test --increments 1000000 --seed 20261124` once free-surface
   // ("dust") states were added: extension from the cap's tip of a 0.26 Pa surface (pressure-dependent
-  // K) and shear from a 11 Pa surface (constant E), each with its spin. `substep` returned p' = −1.7e5 Pa with p_c = 1.2e20
-  // Pa and p' = −1.4e6 Pa with p_c = 3.9e19 Pa: its drift correction judged f relative to the runaway
-  // p_c. On the surface 0 ≤ p ≤ p_c, and one increment of stress scale S cannot build a surface of
-  // 1e19 Pa: p ≥ −1e-8 S, p_c ≤ 10 max(p_c,n, S).
+  // K) and shear from a 11 Pa surface (constant E), each with its spin. `substep` returned
+  // p' = −1.7e5 Pa with p_c = 1.2e20 Pa and p' = −1.4e6 Pa with p_c = 3.9e19 Pa: its drift correction
+  // judged f relative to the runaway p_c. On the surface 0 ≤ p ≤ p_c, and one increment of stress
+  // scale S cannot build a surface of 1e19 Pa: p ≥ −1e-8 S, p_c ≤ 10 max(p_c,n, S).
   struct Case {
     const char* label;
     double stress[9], pc, strain[9], spin[9];
@@ -65,8 +65,8 @@ TEST_CASE("stress test: dust increments it found keep p' >= 0 and p_c bounded wi
         0.00017102443769735783},
        {0, -0.00015831873923340947, -0.00057245182954311451, 0.00015831873923340947, 0, 0.00047528609736550791,
         0.00057245182954311451, -0.00047528609736550791, 0}}};
+  const auto materials = stress_test_materials();
   for (const Case& c : cases) {
-    const auto materials = stress_test_materials();
     const auto it = std::find_if(materials.begin(), materials.end(), [&](const auto& m) { return m.label == c.label; });
     REQUIRE(it != materials.end());
     const auto& base = std::get<ModifiedCamClay>(it->material);
@@ -75,8 +75,7 @@ TEST_CASE("stress test: dust increments it found keep p' >= 0 and p_c bounded wi
     for (int i = 0; i < 9; ++i)
       start.stress(i / 3, i % 3) = c.stress[i], d_eps(i / 3, i % 3) = c.strain[i], d_spin(i / 3, i % 3) = c.spin[i];
     start.pc = c.pc;
-    const Moduli D = base.elasticity().at(mean_pressure(start.stress));
-    const double scale = std::max({start.pc, mean_pressure(start.stress), 3.0 * (D.K + 2.0 * D.G) * d_eps.norm()});
+    const double scale = increment_scale(base, start, d_eps);
     for (Integrator scheme : kIntegrators) {
       auto params = base.params();
       params.integrator = scheme;
