@@ -6,7 +6,7 @@
 
 namespace soilsph::sph {
 
-void CellList::build(std::span<const double> x, std::span<const double> y, double cell_size) {
+void CellList::build(std::span<const double> x, std::span<const double> y, double cell_size, bool keep_positions) {
   const std::size_t n = x.size();
   if (n == 0) {
     nx_ = ny_ = 0;
@@ -36,6 +36,20 @@ void CellList::build(std::span<const double> x, std::span<const double> y, doubl
   for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
   cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
   for (std::size_t i = 0; i < n; ++i) sorted_[cursor_[cell_of_[i]]++] = static_cast<int>(i);
+  if (!keep_positions) return;
+  sorted_x_.resize(n);
+  sorted_y_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(sorted_[k]);
+    sorted_x_[k] = x[i], sorted_y_[k] = y[i];
+  }
+}
+
+CellList::Run CellList::row_of_three(int cx, int cy) const {
+  if (cy < 0 || cy >= ny_) return {nullptr, nullptr, nullptr, 0};
+  const int first = cy * nx_ + std::max(cx - 1, 0), last = cy * nx_ + std::min(cx + 1, nx_ - 1);
+  const auto begin = static_cast<std::size_t>(cell_start_[first]), end = static_cast<std::size_t>(cell_start_[last + 1]);
+  return {sorted_.data() + begin, sorted_x_.data() + begin, sorted_y_.data() + begin, end - begin};
 }
 
 int CellList::cell_x(double x) const {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <vector>
 
 namespace soilsph::sph {
 
@@ -30,11 +31,13 @@ void NeighbourList::search(std::span<const double> x, std::span<const double> y,
                            std::size_t first_boundary) {
   const std::size_t n = x.size();
   const double radius = kernel.support() + kSkinRatio * kernel.smoothing_length();
+  const SearchRadii radii{radius * radius, kernel.support() * kernel.support(),
+                          kernel.smoothing_length() * kernel.smoothing_length()};
   std::exception_ptr failure;
 #pragma omp single copyprivate(failure)
   {
     try {
-      cells_.build(x, y, radius);
+      cells_.build(x, y, radius, true);
     } catch (...) {
       failure = std::current_exception();
     }
@@ -49,7 +52,7 @@ void NeighbourList::search(std::span<const double> x, std::span<const double> y,
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = 0; s < rows; ++s) {
       const std::size_t found =
-          search_row(static_cast<std::size_t>(s), x, y, radius * radius, first_boundary);
+          search_row(static_cast<std::size_t>(s), x, y, radii, first_boundary);
       if (found > slots_) {  // rare: a compressed cluster; grow with a margin and redo
         std::size_t most = most_candidates_.load(std::memory_order_relaxed);
         while (found > most &&
@@ -82,36 +85,42 @@ void NeighbourList::search(std::span<const double> x, std::span<const double> y,
 }
 
 std::size_t NeighbourList::search_row(std::size_t i, std::span<const double> x, std::span<const double> y,
-                                      double radius2, std::size_t first_boundary) {
+                                      const SearchRadii& radii, std::size_t first_boundary) {
+  struct Candidate {
+    double r2;
+    int j;
+  };
+  thread_local std::vector<Candidate> found;  // grows to the largest row once, then reused
+  found.clear();
   const bool boundary_i = i >= first_boundary;
-  const int cx = cells_.cell_x(x[i]), cy = cells_.cell_y(y[i]);
-  const std::size_t first = i * slots_, last = first + slots_;
-  std::size_t k = first;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx)
-      for (const int j : cells_.particles_in(cx + dx, cy + dy)) {
-        const auto uj = static_cast<std::size_t>(j);
-        if (uj == i || (boundary_i && uj >= first_boundary)) continue;
-        const double rxij = x[i] - x[uj], ryij = y[i] - y[uj];
-        if (rxij * rxij + ryij * ryij >= radius2) continue;
-        if (k < last) candidates_[k] = j;
-        ++k;
-      }
-  candidate_count_[i] = std::min(k - first, slots_);
-  if (k <= last) {
-    // Nearest first (ties by index, so the order is a function of the positions alone): while
-    // the candidates move less than the skin, the pairs within the support stay a prefix of the
-    // row and the kernel's inner branch the first of them, so the tests of fill_row are predictable.
-    const double xi = x[i], yi = y[i];
-    std::sort(candidates_.begin() + static_cast<std::ptrdiff_t>(first),
-              candidates_.begin() + static_cast<std::ptrdiff_t>(k), [&](int a, int b) {
-                const double ax = xi - x[static_cast<std::size_t>(a)], ay = yi - y[static_cast<std::size_t>(a)];
-                const double bx = xi - x[static_cast<std::size_t>(b)], by = yi - y[static_cast<std::size_t>(b)];
-                const double ra = ax * ax + ay * ay, rb = bx * bx + by * by;
-                return ra < rb || (ra == rb && a < b);
-              });
+  const auto band = [&](double r2) { return static_cast<std::size_t>(r2 >= radii.inner2) + (r2 >= radii.support2); };
+  const double xi = x[i], yi = y[i];
+  const int cx = cells_.cell_x(xi), cy = cells_.cell_y(yi);
+  for (int dy = -1; dy <= 1; ++dy) {
+    const CellList::Run run = cells_.row_of_three(cx, cy + dy);
+    for (std::size_t k = 0; k < run.size; ++k) {
+      const double rxij = xi - run.x[k], ryij = yi - run.y[k], r2 = rxij * rxij + ryij * ryij;
+      if (r2 >= radii.search2) continue;
+      const int j = run.index[k];
+      const auto uj = static_cast<std::size_t>(j);
+      if (uj == i || (boundary_i && uj >= first_boundary)) continue;
+      found.push_back({r2, j});
+    }
   }
-  return k - first;
+  const std::size_t count = found.size(), first = i * slots_;
+  candidate_count_[i] = std::min(count, slots_);
+  if (count <= slots_) {
+    // In three bands, each in the search's order: within h (the kernel's inner branch), within the
+    // support 2h (its outer branch), and the skin beyond. While the candidates move less than the
+    // skin, a row's pairs stay nearly a prefix of it and each band takes one branch of the kernel,
+    // so the tests of fill_row are predicted. A stable counting partition, O(n): the order is a
+    // function of the positions alone (the cell order, then the index), as a sort's would be.
+    std::size_t next[3] = {0, 0, 0};
+    for (const Candidate& c : found) ++next[band(c.r2)];
+    next[2] = next[0] + next[1], next[1] = next[0], next[0] = 0;
+    for (const Candidate& c : found) candidates_[first + next[band(c.r2)]++] = c.j;
+  }
+  return count;
 }
 
 void NeighbourList::fill_row(std::size_t i, std::span<const double> x, std::span<const double> y,

@@ -85,10 +85,14 @@ class NeighbourList {
   std::vector<double> w;       ///< W_ij
   std::vector<double> gx, gy;  ///< ∇_i W_ij = dW/dr (x_i − x_j)/r (1/m³)
 
-  /// Candidates of particle i within `radius`; returns how many there are (all of them, even beyond
-  /// the slots, which then must grow).
-  std::size_t search_row(std::size_t i, std::span<const double> x, std::span<const double> y, double radius2,
-                         std::size_t first_boundary);
+  /// Squares of the search radius 2h + s, the support 2h and h.
+  struct SearchRadii {
+    double search2, support2, inner2;
+  };
+  /// Candidates of particle i within the search radius; returns how many there are (all of them,
+  /// even beyond the slots, which then must grow).
+  std::size_t search_row(std::size_t i, std::span<const double> x, std::span<const double> y,
+                         const SearchRadii& radii, std::size_t first_boundary);
 
   CellList cells_;
   std::size_t slots_ = 48;  ///< candidate (= pair) slots per particle
