@@ -15,6 +15,17 @@ namespace soilsph::sph {
 /// output. The mirroring reads the ghost's friction coefficient instead (stages/boundaries.h).
 using BoundaryKind = WallKind;
 
+/// What particle j contributes to every pair term of the momentum equation, packed so that a pair
+/// reads one cache line of j instead of one line from each of seven arrays: σ/ρ², v^{n−½}, ρ^n, m,
+/// and whether j carries an artificial stress. Copied for every particle at the start of each step
+/// (stages/momentum.h, set_momentum_source); valid until the step changes σ, v or ρ.
+struct MomentumSource {
+  double sxx_rho2, syy_rho2, sxy_rho2;  ///< σ/ρ² (m²/s²)
+  double vx, vy;                        ///< m/s
+  double density, mass;
+  bool tension;  ///< R ≠ 0 (stages/artificial_stress.h)
+};
+
 struct Particles {
   std::size_t soil_count = 0;  ///< soil particles are the first soil_count entries
 
@@ -25,7 +36,7 @@ struct Particles {
   std::vector<double> mass;           ///< kg per metre of thickness (plane strain)
   std::vector<double> sxx, syy, sxy;  ///< in-plane stress used by the momentum equation (Pa)
   std::vector<double> rxx, ryy, rxy;  ///< artificial stress (Gray et al. 2001), divided by ρ² (m²/s²)
-  std::vector<double> sxx_rho2, syy_rho2, sxy_rho2;  ///< σ/ρ² (m²/s²), once per particle for every pair
+  std::vector<MomentumSource> momentum_source;  ///< per step, for the pairs of the momentum equation
 
   // Soil only.
   std::vector<double> ax, ay;              ///< acceleration (m/s²)
@@ -59,11 +70,11 @@ struct Particles {
   void for_each_array(F&& f) const {
     for_each_array_of(*this, f);
   }
-  static constexpr std::size_t kParticleArrays = 15;  ///< the first arrays for_each_array visits
+  static constexpr std::size_t kParticleArrays = 12;  ///< the first arrays for_each_array visits
 
   /// Bytes held by the arrays.
   std::size_t bytes() const {
-    std::size_t b = state.capacity() * sizeof(State) + (layer.capacity() + material.capacity()) * sizeof(int) + boundary_kind.capacity() +
+    std::size_t b = state.capacity() * sizeof(State) + momentum_source.capacity() * sizeof(MomentumSource) + (layer.capacity() + material.capacity()) * sizeof(int) + boundary_kind.capacity() +
                     wall_id.capacity() * sizeof(int);
     for (const auto* a : {&wall_nx, &wall_ny, &wall_vx, &wall_vy, &wall_friction, &wall_stick})
       b += a->capacity() * sizeof(double);
@@ -76,6 +87,7 @@ struct Particles {
     soil_count = soil;
     std::size_t k = 0;
     for_each_array([&](const char*, std::vector<double>& a) { a.assign(k++ < kParticleArrays ? soil + boundary : soil, 0.0); });
+    momentum_source.assign(soil + boundary, MomentumSource{});
     state.assign(soil, State{});
     layer.assign(soil, 0);
     material.assign(soil, 0);
@@ -89,7 +101,6 @@ struct Particles {
   static void for_each_array_of(Self& p, F& f) {
     f("x", p.x), f("y", p.y), f("vx", p.vx), f("vy", p.vy), f("density", p.density), f("mass", p.mass);
     f("sxx", p.sxx), f("syy", p.syy), f("sxy", p.sxy), f("rxx", p.rxx), f("ryy", p.ryy), f("rxy", p.rxy);
-    f("sxx_rho2", p.sxx_rho2), f("syy_rho2", p.syy_rho2), f("sxy_rho2", p.sxy_rho2);
     f("ax", p.ax), f("ay", p.ay), f("density_rate", p.density_rate);
     f("lxx", p.lxx), f("lxy", p.lxy), f("lyx", p.lyx), f("lyy", p.lyy);
     f("x0", p.x0), f("y0", p.y0);

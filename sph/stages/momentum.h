@@ -28,66 +28,65 @@ struct Acceleration {
   double x, y;
 };
 
-/// σ/ρ² of particle i, which every pair of the momentum equation reads (once per particle instead
-/// of a division per pair).
-inline void set_stress_over_density2(Particles& p, std::size_t i) {
+/// What every pair of the momentum equation reads of particle i (particles.h, MomentumSource): σ/ρ²
+/// once per particle instead of a division per pair, and a copy of v, ρ, m. After its artificial
+/// stress (set_artificial_stress).
+inline void set_momentum_source(Particles& p, std::size_t i) {
   const double inv_rho2 = 1.0 / (p.density[i] * p.density[i]);
-  p.sxx_rho2[i] = p.sxx[i] * inv_rho2, p.syy_rho2[i] = p.syy[i] * inv_rho2,
-  p.sxy_rho2[i] = p.sxy[i] * inv_rho2;
+  p.momentum_source[i] = {p.sxx[i] * inv_rho2, p.syy[i] * inv_rho2, p.sxy[i] * inv_rho2, p.vx[i], p.vy[i],
+                          p.density[i],        p.mass[i],           p.rxx[i] != 0.0 || p.ryy[i] != 0.0};
 }
 
 /// The pair terms of eq 12 for one particle i: what neighbour j contributes to a_i through the pair
-/// q (m/s²), from the current σ/ρ² (set_stress_over_density2), artificial stress, density and
-/// velocity (p.vx, p.vy). One definition for the step's sum (acceleration_of) and for the force each
+/// q (m/s²), from the momentum sources (set_momentum_source) and the artificial stress. One definition for the step's sum (acceleration_of) and for the force each
 /// wall's ghosts exert (analysis/boundary_forces.h).
 class PairAcceleration {
  public:
   PairAcceleration(const Particles& p, const MomentumParams& m, std::size_t i)
       : p_(p),
-        m_(m),
         i_(i),
         h_(m.smoothing_length),
         eta2_(0.01 * h_ * h_),
+        alpha_c_(m.viscosity_alpha * m.sound_speed),
+        beta_(m.viscosity_beta),
         art_(m.artificial_stress.enabled),
         inv_w_dp_(1.0 / m.artificial_stress.w_at_spacing),
         n_exp_(m.artificial_stress.exponent),
-        sxx_i_(p.sxx_rho2[i]),
-        syy_i_(p.syy_rho2[i]),
-        sxy_i_(p.sxy_rho2[i]),
-        has_tension_i_(p.rxx[i] != 0.0 || p.ryy[i] != 0.0) {}
+        source_(p.momentum_source.data()),
+        self_(p.momentum_source[i]) {}
 
   Acceleration operator()(const NeighbourList::Pair& q) const {
-    const Particles& p = p_;
-    const std::size_t i = i_, j = q.j;
-    double txx = sxx_i_ + p.sxx_rho2[j];
-    double tyy = syy_i_ + p.syy_rho2[j];
-    double txy = sxy_i_ + p.sxy_rho2[j];
-    const double v_dot_r = (p.vx[i] - p.vx[j]) * q.rx + (p.vy[i] - p.vy[j]) * q.ry;
+    const MomentumSource& a = self_;
+    const MomentumSource& b = source_[q.j];
+    double txx = a.sxx_rho2 + b.sxx_rho2;
+    double tyy = a.syy_rho2 + b.syy_rho2;
+    double txy = a.sxy_rho2 + b.sxy_rho2;
+    const double v_dot_r = (a.vx - b.vx) * q.rx + (a.vy - b.vy) * q.ry;
     if (v_dot_r < 0.0) {  // eq 37: only approaching pairs
       const double phi = h_ * v_dot_r / (q.rx * q.rx + q.ry * q.ry + eta2_);
-      const double pi = (-m_.viscosity_alpha * m_.sound_speed * phi + m_.viscosity_beta * phi * phi) /
-                        (0.5 * (p.density[i] + p.density[j]));
+      const double pi = (-alpha_c_ * phi + beta_ * phi * phi) / (0.5 * (a.density + b.density));
       txx -= pi;
       tyy -= pi;
     }
-    if (art_ && (has_tension_i_ || p.rxx[j] != 0.0 || p.ryy[j] != 0.0)) {  // R = 0 without tension
+    if (art_ && (a.tension || b.tension)) {  // R = 0 without tension
+      const Particles& p = p_;
+      const std::size_t i = i_, j = q.j;
       const double f = std::pow(q.w * inv_w_dp_, n_exp_);
       txx += f * (p.rxx[i] + p.rxx[j]);
       tyy += f * (p.ryy[i] + p.ryy[j]);
       txy += f * (p.rxy[i] + p.rxy[j]);
     }
-    return {p.mass[j] * (txx * q.gx + txy * q.gy), p.mass[j] * (txy * q.gx + tyy * q.gy)};
+    return {b.mass * (txx * q.gx + txy * q.gy), b.mass * (txy * q.gx + tyy * q.gy)};
   }
 
  private:
   const Particles& p_;
-  const MomentumParams& m_;
   std::size_t i_;
-  double h_, eta2_;
+  double h_, eta2_, alpha_c_, beta_;
   bool art_;
   double inv_w_dp_, n_exp_;
-  double sxx_i_, syy_i_, sxy_i_;
-  bool has_tension_i_;
+  const MomentumSource* source_;
+  MomentumSource self_;
 };
 
 /// a_i of soil particle i: the pair terms of every neighbour (soil and ghost) and gravity.
@@ -107,7 +106,7 @@ inline Acceleration acceleration_of(const Particles& p, const NeighbourList& nl,
 inline void compute_acceleration(Particles& p, const NeighbourList& nl, const MomentumParams& m) {
   const auto all = static_cast<std::ptrdiff_t>(p.size()), n = static_cast<std::ptrdiff_t>(p.soil_count);
 #pragma omp for schedule(static)
-  for (std::ptrdiff_t s = 0; s < all; ++s) set_stress_over_density2(p, static_cast<std::size_t>(s));
+  for (std::ptrdiff_t s = 0; s < all; ++s) set_momentum_source(p, static_cast<std::size_t>(s));
 #pragma omp for schedule(static)
   for (std::ptrdiff_t s = 0; s < n; ++s) {
     const auto i = static_cast<std::size_t>(s);
