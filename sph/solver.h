@@ -204,16 +204,21 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
   if (!work.error) {
     // 1. Pairs at x^n; ghosts take σ^n, ρ^n from the soil (their v^{n−½} came with the last step);
     //    the artificial stress from σ^n, then what the pairs of the momentum equation read (σ/ρ², v, ρ,
-    //    m packed per particle), soil and ghosts.
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t s = 0; s < all; ++s) {
-      const auto i = static_cast<std::size_t>(s);
+    //    m packed per particle), soil and ghosts. The soil rows and the ghost rows are shared out
+    //    apart, so that every thread fills the soil rows it reads again in loops 2 and 4 (a soil
+    //    row costs several ghost rows) and no thread waits between the two halves (nowait: the
+    //    ghosts read only what the soil rows do not write).
+    const auto prepare = [&](std::size_t i) {
       nl.fill_row(i, p.x, p.y, setup.kernel);
       if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i);
       work.volume[i] = particle_volume(p, i);
       if (m.artificial_stress.enabled) set_artificial_stress(p, i, m.artificial_stress.epsilon);
       set_momentum_source(p, i);
-    }
+    };
+#pragma omp for schedule(static) nowait
+    for (std::ptrdiff_t s = 0; s < soil; ++s) prepare(static_cast<std::size_t>(s));
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = soil; s < all; ++s) prepare(static_cast<std::size_t>(s));
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
     //    Each particle's own ρ and σ, whatever its material: no interface model (docs/scenes.md).
 #pragma omp for schedule(static)
