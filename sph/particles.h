@@ -74,7 +74,8 @@ struct Particles {
 
   /// Bytes held by the arrays.
   std::size_t bytes() const {
-    std::size_t b = state.capacity() * sizeof(State) + momentum_source.capacity() * sizeof(MomentumSource) + (layer.capacity() + material.capacity()) * sizeof(int) + boundary_kind.capacity() +
+    std::size_t b = state.capacity() * sizeof(State) + momentum_source.capacity() * sizeof(MomentumSource) +
+                    (layer.capacity() + material.capacity()) * sizeof(int) + boundary_kind.capacity() +
                     wall_id.capacity() * sizeof(int);
     for (const auto* a : {&wall_nx, &wall_ny, &wall_vx, &wall_vy, &wall_friction, &wall_stick})
       b += a->capacity() * sizeof(double);

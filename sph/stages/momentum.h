@@ -38,8 +38,9 @@ inline void set_momentum_source(Particles& p, std::size_t i) {
 }
 
 /// The pair terms of eq 12 for one particle i: what neighbour j contributes to a_i through the pair
-/// q (m/s²), from the momentum sources (set_momentum_source) and the artificial stress. One definition for the step's sum (acceleration_of) and for the force each
-/// wall's ghosts exert (analysis/boundary_forces.h).
+/// q (m/s²), from the momentum sources (set_momentum_source) and the artificial stress. One
+/// definition for the step's sum (acceleration_of) and for the force each wall's ghosts exert
+/// (analysis/boundary_forces.h).
 class PairAcceleration {
  public:
   PairAcceleration(const Particles& p, const MomentumParams& m, std::size_t i)
