@@ -29,6 +29,8 @@ void add_bench_command(CLI::App& app) {
     double min_seconds = 0.02;
     std::string only;
     std::vector<double> path_tolerances = {1e-3, 1e-4, 1e-5};
+    std::vector<double> substep_tolerances = verification::WorkPrecisionOptions{}.substep_tolerances;
+    std::vector<double> implicit_tolerances = verification::WorkPrecisionOptions{}.implicit_tolerances;
   };
   auto o = std::make_shared<Options>();
   point->add_option("--out", o->out, "output directory (work_precision.csv)")->capture_default_str();
@@ -42,6 +44,13 @@ void add_bench_command(CLI::App& app) {
                     "(labelled +path(TOL); the Table 1 cases run without)")
       ->delimiter(',')
       ->capture_default_str();
+  point->add_option("--substep-tolerances", o->substep_tolerances, "substep_tolerance values, one row each")
+      ->delimiter(',')
+      ->capture_default_str();
+  point->add_option("--implicit-tolerances", o->implicit_tolerances,
+                    "MCC implicit_tolerance values, one row each besides plain implicit")
+      ->delimiter(',')
+      ->capture_default_str();
   point->add_option("--case", o->only,
                     "run one case: mcc-table1, dp-table1, mcc-kp-200kPa, mcc-kp-200kPa-ocr1.5 (default all)");
   point->callback([o] {
@@ -49,6 +58,8 @@ void add_bench_command(CLI::App& app) {
     WorkPrecisionOptions options;
     if (!o->increments.empty()) options.increments = o->increments;
     options.min_seconds = o->min_seconds;
+    options.substep_tolerances = o->substep_tolerances;
+    options.implicit_tolerances = o->implicit_tolerances;
     std::filesystem::create_directories(o->out);
     std::vector<WorkPrecisionRow> rows;
     // The Table 1 soils (MCC with constant E = 1 MPa) from 100 kPa, NC; then the Table 1 clay with
