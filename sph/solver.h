@@ -12,7 +12,9 @@
 /// fusing every stage that reads the same data (below), plus one short serial close: five barriers
 /// a step instead of a fork and a join per stage. A barrier is the only cost of a second thread,
 /// and it is what a sleeping (passive) or descheduled thread makes expensive, so the fewer the
-/// better on an idle and on a busy machine alike. Called outside a parallel region (the tests),
+/// better on an idle and on a busy machine alike. The soil loops whose cost per particle varies
+/// (pairs, acceleration, stress update) are cut by measured cost, not count (range_balancer.h):
+/// MCC's plastic returns cluster where the soil yields. Called outside a parallel region (the tests),
 /// `advance` does the same work on one thread. Results do not depend on the thread count: every
 /// loop writes per particle, reductions are serial.
 #include <omp.h>
@@ -32,6 +34,7 @@
 #include "sph/kernel.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
+#include "sph/range_balancer.h"
 #include "sph/rest.h"
 #include "sph/scene.h"
 #include "sph/stages/artificial_stress.h"
@@ -113,10 +116,26 @@ struct Workspace {
   std::function<void(const StepSample&)> sampler;  ///< called inside the steps that sample (RunControl)
   bool sample_due = false;  ///< this step samples; changed only between steps (every thread reads it)
   double sample_time = 0.0;  ///< t^n of the last sample
+  /// The cuts of the loops over soil rows that differ in cost per particle (range_balancer.h):
+  /// loop 1, loop 2 and loop 4 of each material group.
+  RangeBalancer prepare_balance, momentum_balance;
+  std::vector<RangeBalancer> stress_balance;
 
   Workspace(const SolverSetup& setup, const Particles& p)
       : vx_next(p.vx), vy_next(p.vy), density_next(p.density), volume(p.size()), sound_speed(setup.sound_speed) {}
   bool failed() const { return failure.failed() || error; }
+  /// Sizes the balancers for a parallel region of `threads` over `groups` material groups (serial).
+  void use_threads(int threads, std::size_t groups) {
+    stress_balance.resize(groups);
+    prepare_balance.use_threads(threads);
+    momentum_balance.use_threads(threads);
+    for (RangeBalancer& b : stress_balance) b.use_threads(threads);
+  }
+  void rebalance() {
+    prepare_balance.rebalance();
+    momentum_balance.rebalance();
+    for (RangeBalancer& b : stress_balance) b.rebalance();
+  }
 };
 
 namespace detail {
@@ -193,6 +212,20 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
   const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
   const auto& m = setup.momentum;
   const double kick_dt = kick_interval(work.previous_dt, dt);
+  // body(i) for i in [begin, end): this thread's part by `balance`, timed for it; no barrier.
+  const int thread = omp_get_thread_num(), threads = omp_get_num_threads();
+  const auto balanced = [&](RangeBalancer& balance, std::size_t begin, std::size_t end, auto&& body) {
+    if (threads == 1 || balance.threads() != threads) {  // outside a region, or not sized for it
+#pragma omp for schedule(static) nowait
+      for (auto s = static_cast<std::ptrdiff_t>(begin); s < static_cast<std::ptrdiff_t>(end); ++s)
+        body(static_cast<std::size_t>(s));
+      return;
+    }
+    const double start = omp_get_wtime();
+    const auto [first, last] = balance.part(begin, end, thread);
+    for (std::size_t i = first; i < last; ++i) body(i);
+    balance.record(thread, omp_get_wtime() - start);
+  };
   if (work.search_next) {
     try {
       nl.search(p.x, p.y, setup.kernel, p.soil_count);  // every thread throws alike, or none
@@ -215,20 +248,18 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
       if (m.artificial_stress.enabled) set_artificial_stress(p, i, m.artificial_stress.epsilon);
       set_momentum_source(p, i);
     };
-#pragma omp for schedule(static) nowait
-    for (std::ptrdiff_t s = 0; s < soil; ++s) prepare(static_cast<std::size_t>(s));
+    balanced(work.prepare_balance, 0, p.soil_count, prepare);
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = soil; s < all; ++s) prepare(static_cast<std::size_t>(s));
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
     //    Each particle's own ρ and σ, whatever its material: no interface model (docs/scenes.md).
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t s = 0; s < soil; ++s) {
-      const auto i = static_cast<std::size_t>(s);
+    balanced(work.momentum_balance, 0, p.soil_count, [&](std::size_t i) {
       const Acceleration a = acceleration_of(p, nl, m, i);
       p.ax[i] = a.x, p.ay[i] = a.y;
       work.vx_next[i] = p.vx[i] + kick_dt * a.x;
       work.vy_next[i] = p.vy[i] + kick_dt * a.y;
-    }
+    });
+#pragma omp barrier
     if (work.sample_due) {
 #pragma omp single
       try {
@@ -244,23 +275,25 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
       mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.vx_next, work.vy_next);
     // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
     //    stage of this loop reads x or σ of a neighbour: the pairs hold x_i − x_j). One loop per
-    //    material, its model chosen once here by every thread alike.
+    //    material, its model chosen once here by every thread alike. The groups are disjoint: one
+    //    barrier after the last.
+    std::size_t group = 0;
     detail::for_each_group(groups, [&](const auto& model, const auto& fallback, std::size_t begin, std::size_t end) {
-#pragma omp for schedule(static)
-      for (auto s = static_cast<std::ptrdiff_t>(begin); s < static_cast<std::ptrdiff_t>(end); ++s) {
-        const auto i = static_cast<std::size_t>(s);
+      balanced(work.stress_balance[group++], begin, end, [&](std::size_t i) {
         const KinematicRates rates =
             kinematic_rates_of(p, nl, i, work.vx_next, work.vy_next, work.volume, setup.velocity_gradient_correction);
         update_particle_stress(model, fallback, p, i, rates.L, dt, work.failure);
         work.density_next[i] = p.density[i] + dt * rates.density_rate;
         p.x[i] += dt * work.vx_next[i];
         p.y[i] += dt * work.vy_next[i];
-      }
+      });
     });
+#pragma omp barrier
   }
 #pragma omp single
   {
     if (!work.failed()) detail::close_step(groups, setup, p, work, dt);
+    work.rebalance();
     on_closed();
   }
 }
@@ -277,7 +310,9 @@ MaterialGroups single_material(const Model& model, const Particles& p) {
 /// One step of the whole soil with one model and its own fallback, without a callback (tests).
 template <class Model>
 void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
-  advance_groups(single_material(model, p), setup, p, work, dt, [] {});
+  const MaterialGroups groups = single_material(model, p);
+  work.use_threads(1, groups.size());
+  advance_groups(groups, setup, p, work, dt, [] {});
 }
 
 /// Why a run returned.
@@ -501,6 +536,7 @@ RunStatistics run_groups(const MaterialGroups& groups, const SolverSetup& setup,
     const auto chunk_start = Clock::now();
     const std::size_t first = stats.steps,
                       steps_now = tuner.trying() ? std::max<std::size_t>(chunk / 4, 4) : chunk;
+    work.use_threads(tuner.threads(), groups.size());
 #pragma omp parallel num_threads(tuner.threads())
     for (std::size_t k = 0; k < steps_now && !stop; ++k)  // `stop` is read after the closing barrier
       advance_groups(groups, setup, p, work, dt, close);
