@@ -212,7 +212,8 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
   const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
   const auto& m = setup.momentum;
   const double kick_dt = kick_interval(work.previous_dt, dt);
-  // body(i) for i in [begin, end): this thread's part by `balance`, timed for it; no barrier.
+  // body(i) for i in [begin, end): this thread's part by `balance`, timed in its CPU time (wall
+  // time would count the time the thread was descheduled on a busy machine); no barrier.
   const int thread = omp_get_thread_num(), threads = omp_get_num_threads();
   const auto balanced = [&](RangeBalancer& balance, std::size_t begin, std::size_t end, auto&& body) {
     if (threads == 1 || balance.threads() != threads) {  // outside a region, or not sized for it
@@ -221,10 +222,10 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
         body(static_cast<std::size_t>(s));
       return;
     }
-    const double start = omp_get_wtime();
+    const double start = thread_cpu_seconds();
     const auto [first, last] = balance.part(begin, end, thread);
     for (std::size_t i = first; i < last; ++i) body(i);
-    balance.record(thread, omp_get_wtime() - start);
+    balance.record(thread, thread_cpu_seconds() - start);
   };
   if (work.search_next) {
     try {

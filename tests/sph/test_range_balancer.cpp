@@ -63,6 +63,23 @@ TEST_CASE("the balancer's cuts converge to equal cost", "[threads]") {
   check_cover(three, 100, 3100);
 }
 
+TEST_CASE("one step's outlying time moves a cut by at most kMaxMove", "[threads]") {
+  // Even costs, then one step in which thread 0 took 100x as long (it lost its core): the
+  // equal-cost cut would be near 0, halfway would move it by about a quarter of the range.
+  RangeBalancer balance;
+  balance.use_threads(2);
+  balance.record(0, 100.0);
+  balance.record(1, 1.0);
+  balance.rebalance();
+  CHECK(balance.cuts()[1] == Approx(0.5 - RangeBalancer::kMaxMove));
+  // Back to a uniform cost (times in proportion to the parts): halfway back to the middle.
+  const double cut = balance.cuts()[1];
+  balance.record(0, cut);
+  balance.record(1, 1.0 - cut);
+  balance.rebalance();
+  CHECK(balance.cuts()[1] == Approx(0.5 - RangeBalancer::kMaxMove / 2));
+}
+
 TEST_CASE("every part keeps a least share, and a new thread count starts even", "[threads]") {
   // All the cost in the first ten particles: the equal-cost cut would be at 0.5 %, below the
   // least share of an even part.
