@@ -17,9 +17,9 @@
 /// busy machine from steering the cuts: with wall time, a step in which one thread lost its core
 /// moved work to the other, and the cuts chased the other process (measured: auto threads with one
 /// core busy, MCC to rest, 18.4 s median against 17.6 s unbalanced; 17.2 s with CPU time). Every
-/// part keeps at least kMinShare of an even part, so no thread's time goes unmeasured. A change of thread count
-/// starts again from an even split. Results do not depend on the cuts: every loop it shares
-/// out writes per particle.
+/// part keeps at least kMinShare of an even part, so no thread's time goes unmeasured. A change of
+/// thread count starts again from an even split. Results do not depend on the cuts: every loop it
+/// shares out writes per particle.
 #include <time.h>
 
 #include <algorithm>
@@ -72,8 +72,8 @@ class RangeBalancer {
   /// `thread` took `seconds` for its part of this step (each thread writes its own slot).
   void record(int thread, double seconds) { seconds_[static_cast<std::size_t>(thread)] = seconds; }
 
-  /// Moves the cuts halfway towards equal cost (serial, between steps) and forgets the times, so
-  /// that a step that timed nothing (run on one thread) moves nothing.
+  /// Moves the cuts halfway towards equal cost, by at most kMaxMove (serial, between steps), and
+  /// forgets the times, so that a step that timed nothing (run on one thread) moves nothing.
   void rebalance() {
     const std::size_t n = seconds_.size();
     if (n < 2) return;

@@ -1,5 +1,6 @@
 // The range balancer on made-up costs per particle: its cuts converge to the split of equal cost,
-// keep every part measurable, cover the range, and start even when the thread count changes.
+// move little on one outlying step, keep every part measurable, cover the range, and start even
+// when the thread count changes.
 #include <catch2/catch.hpp>
 
 #include <cmath>
