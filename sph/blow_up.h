@@ -71,6 +71,14 @@ inline std::string particle_blow_up(const Particles& p, std::size_t i, double so
   return out.str() + kBlowUpHint;
 }
 
+/// Where an energy blow-up shows most: "the fastest soil particle, i at (x, y) m, moves at v m/s".
+inline std::string fastest_particle(const Particles& p, std::size_t i) {
+  std::ostringstream out;
+  out << "the fastest soil particle, " << i << " at (" << p.x[i] << ", " << p.y[i] << ") m, moves at "
+      << std::hypot(p.vx[i], p.vy[i]) << " m/s";
+  return out.str();
+}
+
 /// The energy a run may never exceed in kinetic energy (J per metre of thickness): the soil's
 /// potential energy |g| (height − datum) along −g above the lowest wall, its elastic energy
 /// ½ σ:C:σ V and its kinetic energy now; of the soil particles [begin, end), by default all.

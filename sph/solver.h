@@ -176,10 +176,10 @@ inline void close_step(const MaterialGroups& groups, const SolverSetup& setup, P
   work.previous_dt = dt;
   const double rest2 = setup.rest.speed * setup.rest.speed, c2 = work.sound_speed * work.sound_speed;
   double v2_max = 0.0, kinetic = 0.0;
-  std::size_t moving = 0, first_insane = p.soil_count;
+  std::size_t moving = 0, first_insane = p.soil_count, fastest = 0;
   for (std::size_t i = 0; i < p.soil_count; ++i) {
     const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
-    v2_max = std::max(v2_max, v2);
+    if (v2 > v2_max) v2_max = v2, fastest = i;
     moving += v2 > rest2;
     kinetic += 0.5 * p.mass[i] * v2;
     if (first_insane == p.soil_count && !particle_sane(p, i, v2, c2, setup.domain)) first_insane = i;
@@ -191,7 +191,8 @@ inline void close_step(const MaterialGroups& groups, const SolverSetup& setup, P
   } else if (!(kinetic <= work.energy_budget)) {
     work.blow_up = "blow-up: the kinetic energy " + std::to_string(kinetic) +
                    " J/m exceeds all the energy the soil held at the start, " +
-                   std::to_string(work.energy_budget) + " J/m (potential, elastic, kinetic)" + kBlowUpHint;
+                   std::to_string(work.energy_budget) + " J/m (potential, elastic, kinetic); " +
+                   fastest_particle(p, fastest) + kBlowUpHint;
   } else if (pushed > std::max<std::size_t>(10, p.soil_count / 100)) {
     work.blow_up = "blow-up: the wall guard pushed " + std::to_string(pushed) +
                    " soil particles back through a wall in one step" + kBlowUpHint;

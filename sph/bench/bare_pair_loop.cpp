@@ -29,7 +29,7 @@ double bare_step(std::span<const double> x, std::span<const double> y, const Cub
           const auto uj = static_cast<std::size_t>(j);
           const double rx = x[i] - x[uj], ry = y[i] - y[uj], r2 = rx * rx + ry * ry;
           if (uj == i || r2 >= support2) continue;
-          const double r = std::sqrt(r2), g = W.derivative(r) / r;
+          const double g = W.value_and_gradient_factor(std::sqrt(r2)).dw_over_r;
           body(uj, g * rx, g * ry);
         }
   };

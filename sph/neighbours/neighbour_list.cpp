@@ -135,9 +135,7 @@ void NeighbourList::fill_row(std::size_t i, std::span<const double> x, std::span
     const double rxij = x[i] - x[uj], ryij = y[i] - y[uj];
     const double r2 = rxij * rxij + ryij * ryij;
     if (r2 >= support2) continue;
-    const double r = std::sqrt(r2);
-    const auto [value, derivative] = kernel.value_and_derivative(r);
-    const double dw_over_r = r > 0.0 ? derivative / r : 0.0;
+    const auto [value, dw_over_r] = kernel.value_and_gradient_factor(std::sqrt(r2));
     neighbour[k] = j;
     rx[k] = rxij;
     ry[k] = ryij;

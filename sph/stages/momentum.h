@@ -64,8 +64,10 @@ class PairAcceleration {
     double txy = a.sxy_rho2 + b.sxy_rho2;
     const double v_dot_r = (a.vx - b.vx) * q.rx + (a.vy - b.vy) * q.ry;
     if (v_dot_r < 0.0) {  // eq 37: only approaching pairs
-      const double phi = h_ * v_dot_r / (q.rx * q.rx + q.ry * q.ry + eta2_);
-      const double pi = (-alpha_c_ * phi + beta_ * phi * phi) / (0.5 * (a.density + b.density));
+      // Π = (−α c φ + β φ²)/ρ̄ with φ = h v·r/d, d = r² + η², ρ̄ = (ρ_i + ρ_j)/2, over one division:
+      // Π = 2 h v·r (β h v·r − α c d) / (d² (ρ_i + ρ_j)).
+      const double d = q.rx * q.rx + q.ry * q.ry + eta2_, hv = h_ * v_dot_r;
+      const double pi = 2.0 * hv * (beta_ * hv - alpha_c_ * d) / (d * d * (a.density + b.density));
       txx -= pi;
       tyy -= pi;
     }
