@@ -21,23 +21,8 @@ class CubicSpline {
   /// Support radius 2h: W and its gradient vanish beyond it.
   double support() const { return 2.0 * h_; }
 
-  /// W(r, h) and dW/dr together, from one branch on R (the neighbour list needs both).
-  struct ValueAndDerivative {
-    double value, derivative;
-  };
-  ValueAndDerivative value_and_derivative(double r) const {
-    const double R = r * inv_h_;
-    if (R < 1.0)
-      return {a_d_ * (2.0 / 3.0 - R * R + 0.5 * R * R * R), a_d_ * inv_h_ * (-2.0 * R + 1.5 * R * R)};
-    if (R < 2.0) {
-      const double s = 2.0 - R;
-      return {a_d_over_6_ * s * s * s, -0.5 * a_d_ * inv_h_ * s * s};
-    }
-    return {0.0, 0.0};
-  }
-
-  /// W(r, h) and dW/dr / r together (the pair fill: ∇_i W_ij is the second times x_i − x_j). One
-  /// division on the outer branch, none on the inner one; 0 beyond the support.
+  /// W(r, h) and dW/dr / r together, from one branch on R (the pair fill: ∇_i W_ij is the second
+  /// times x_i − x_j). One division on the outer branch, none on the inner one; 0 beyond the support.
   struct ValueAndGradientFactor {
     double value, dw_over_r;
   };
@@ -52,10 +37,10 @@ class CubicSpline {
   }
 
   /// W(r, h), eq 2.
-  double value(double r) const { return value_and_derivative(r).value; }
+  double value(double r) const { return value_and_gradient_factor(r).value; }
 
   /// dW/dr; the gradient with respect to x_i is dW/dr · (x_i − x_j)/r.
-  double derivative(double r) const { return value_and_derivative(r).derivative; }
+  double derivative(double r) const { return value_and_gradient_factor(r).dw_over_r * r; }
 
  private:
   double h_;
