@@ -65,6 +65,17 @@ class NeighbourList {
   }
   /// Number of pairs of particle i.
   std::size_t pair_count(std::size_t i) const { return count_[i]; }
+  /// The pairs of particle i as contiguous arrays (pair k: neighbour j[k], x_i − x_j = (rx[k], ry[k]),
+  /// W w[k], ∇_i W (gx[k], gy[k])), for loops the compiler vectorises across pairs.
+  struct Row {
+    const int* j;
+    const double *rx, *ry, *w, *gx, *gy;
+    std::size_t size;
+  };
+  Row row(std::size_t i) const {
+    const std::size_t k = i * slots_;
+    return {neighbour.data() + k, rx.data() + k, ry.data() + k, w.data() + k, gx.data() + k, gy.data() + k, count_[i]};
+  }
 
   std::size_t size() const { return count_.size(); }
   /// The positions of the last search (a resumed run searches from them again to get the same
