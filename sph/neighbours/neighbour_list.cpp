@@ -125,26 +125,35 @@ std::size_t NeighbourList::search_row(std::size_t i, std::span<const double> x, 
 
 void NeighbourList::fill_row(std::size_t i, std::span<const double> x, std::span<const double> y,
                              const CubicSpline& kernel) {
-  const double support2 = kernel.support() * kernel.support();
-  const std::size_t first = i * slots_;
-  std::size_t k = first;
+  // Everything the loop reads besides x and y in locals: through the stores into the rows the
+  // compiler would otherwise reload the rows' addresses and the kernel's constants at every pair.
+  const CubicSpline W = kernel;
+  const double support2 = W.support() * W.support(), xi = x[i], yi = y[i];
+  const std::size_t first = i * slots_, candidates = candidate_count_[i];
   const int* candidate = candidates_.data() + first;
-  for (std::size_t c = 0; c < candidate_count_[i]; ++c) {
+  int* const j_row = neighbour.data() + first;
+  double* const rx_row = rx.data() + first;
+  double* const ry_row = ry.data() + first;
+  double* const w_row = w.data() + first;
+  double* const gx_row = gx.data() + first;
+  double* const gy_row = gy.data() + first;
+  std::size_t k = 0;
+  for (std::size_t c = 0; c < candidates; ++c) {
     const int j = candidate[c];
     const auto uj = static_cast<std::size_t>(j);
-    const double rxij = x[i] - x[uj], ryij = y[i] - y[uj];
+    const double rxij = xi - x[uj], ryij = yi - y[uj];
     const double r2 = rxij * rxij + ryij * ryij;
     if (r2 >= support2) continue;
-    const auto [value, dw_over_r] = kernel.value_and_gradient_factor(std::sqrt(r2));
-    neighbour[k] = j;
-    rx[k] = rxij;
-    ry[k] = ryij;
-    w[k] = value;
-    gx[k] = dw_over_r * rxij;
-    gy[k] = dw_over_r * ryij;
+    const auto [value, dw_over_r] = W.value_and_gradient_factor(std::sqrt(r2));
+    j_row[k] = j;
+    rx_row[k] = rxij;
+    ry_row[k] = ryij;
+    w_row[k] = value;
+    gx_row[k] = dw_over_r * rxij;
+    gy_row[k] = dw_over_r * ryij;
     ++k;
   }
-  count_[i] = k - first;
+  count_[i] = k;
 }
 
 std::size_t NeighbourList::bytes_per_particle() const {
