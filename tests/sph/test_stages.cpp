@@ -223,3 +223,35 @@ TEST_CASE("the fallback of a model with a choice of scheme is its substep twin",
   params.integrator = Integrator::Implicit;
   CHECK(fallback_model(ModifiedCamClay(params)).integrator() == Integrator::Substep);
 }
+
+TEST_CASE("eq 12 with the artificial stress: (1 - eps) T / rho^2 on a pair with one particle in tension",
+          "[stages]") {
+  // Two particles a spacing apart along x, at rest (no viscosity), one in uniaxial tension T along
+  // x, the other stress-free: R = -eps T / rho^2 along x on the tensile one (artificial_stress.h),
+  // f_ij = W(dp)/W(dp) = 1, so a_0 = m_1 (T/rho^2 + R_xx) dW_01/dx_0 = m_1 (1 - eps) T/rho^2 dW/dx_0,
+  // whichever of the two carries the tension (the sum over i and j is symmetric).
+  const CubicSpline W(1.3 * kDx);
+  const double T = 200.0, eps = 0.5;  // Pa
+  const double grad = W.derivative(kDx) * (-kDx) / kDx;  // ∂W/∂x_0, x_0 − x_1 = −Δp
+  for (const std::size_t tensile : {std::size_t{0}, std::size_t{1}})
+    for (const bool enabled : {true, false}) {
+      Particles p;
+      p.resize(2, 0);
+      p.x = {0.0, kDx}, p.y = {0.0, 0.0}, p.vx = {0.0, 0.0}, p.vy = {0.0, 0.0};
+      p.density = {kRho, kRho}, p.mass = {kRho * kDx * kDx, kRho * kDx * kDx};
+      p.sxx = {0.0, 0.0}, p.syy = {0.0, 0.0}, p.sxy = {0.0, 0.0};
+      p.sxx[tensile] = T;
+      NeighbourList nl;
+      nl.build(p.x, p.y, W);
+      MomentumParams params;
+      params.sound_speed = 26.0, params.smoothing_length = W.smoothing_length(), params.gravity = {0.0, 0.0};
+      params.artificial_stress = {enabled, eps, 2.55, W.value(kDx)};
+      compute_artificial_stress(p, eps);
+      compute_acceleration(p, nl, params);
+      const double factor = enabled ? 1.0 - eps : 1.0;
+      CAPTURE(tensile, enabled);
+      CHECK(p.ax[0] == Approx(p.mass[1] * factor * T / (kRho * kRho) * grad).epsilon(1e-12));
+      CHECK(p.ax[1] == Approx(-p.ax[0]).epsilon(1e-12));
+      CHECK(p.ay[0] == 0.0);
+    }
+}
