@@ -74,7 +74,8 @@ class NeighbourList {
   };
   Row row(std::size_t i) const {
     const std::size_t k = i * slots_;
-    return {neighbour.data() + k, rx.data() + k, ry.data() + k, w.data() + k, gx.data() + k, gy.data() + k, count_[i]};
+    return {neighbour.data() + k, rx.data() + k, ry.data() + k, w.data() + k,
+            gx.data() + k,        gy.data() + k, count_[i]};
   }
 
   std::size_t size() const { return count_.size(); }

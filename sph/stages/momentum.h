@@ -70,7 +70,8 @@ class PairAcceleration {
     // compiler would turn back into a branch around the division (d > 0: Π is finite for every pair).
     const double d = rx * rx + ry * ry + eta2_, hv = h_ * v_dot_r;
     const double approaching = v_dot_r < 0.0 ? 1.0 : 0.0;
-    const double pi = approaching * (2.0 * hv * (beta_ * hv - alpha_c_ * d) / (d * d * (a.density + b.density)));
+    const double pi =
+        approaching * (2.0 * hv * (beta_ * hv - alpha_c_ * d) / (d * d * (a.density + b.density)));
     const double txx = a.sxx_rho2 + b.sxx_rho2 - pi;
     const double tyy = a.syy_rho2 + b.syy_rho2 - pi;
     const double txy = a.sxy_rho2 + b.sxy_rho2;
@@ -82,7 +83,8 @@ class PairAcceleration {
   Acceleration artificial_stress(std::size_t j, double w, double gx, double gy) const {
     const Particles& p = p_;
     const double f = std::pow(w * inv_w_dp_, n_exp_);
-    const double txx = f * (p.rxx[i_] + p.rxx[j]), tyy = f * (p.ryy[i_] + p.ryy[j]), txy = f * (p.rxy[i_] + p.rxy[j]);
+    const double txx = f * (p.rxx[i_] + p.rxx[j]), tyy = f * (p.ryy[i_] + p.ryy[j]);
+    const double txy = f * (p.rxy[i_] + p.rxy[j]);
     const double mass = source_[j].mass;
     return {mass * (txx * gx + txy * gy), mass * (txy * gx + tyy * gy)};
   }
@@ -112,8 +114,8 @@ class PairAcceleration {
 /// and viscosity terms in one loop vectorised across the row's pairs, then the few artificial-stress
 /// terms. Out of line (stages/momentum.cpp), so that the loop is compiled on its own whatever the
 /// caller inlines (GCC 12 -fopt-info-vec: vectorised with SSE2 and AVX2 alike).
-[[gnu::noinline]] Acceleration acceleration_of(const Particles& p, const NeighbourList& nl, const MomentumParams& m,
-                                                std::size_t i);
+[[gnu::noinline]] Acceleration acceleration_of(const Particles& p, const NeighbourList& nl,
+                                                const MomentumParams& m, std::size_t i);
 
 /// Fills p.ax, p.ay for every soil particle (orphaned OpenMP loops).
 inline void compute_acceleration(Particles& p, const NeighbourList& nl, const MomentumParams& m) {
