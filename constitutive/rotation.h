@@ -37,7 +37,7 @@ inline Mat3 rotate_about_z(const Mat3& a, double c, double s) {
   return r;
 }
 
-/// Rotates the tensorial parts of `state` with the spin increment; a zero spin costs one test.
+/// Rotates the stress of `state` with the spin increment; a zero spin costs one test.
 /// A spin about z alone (plane strain: Δω_xy = −Δω_yx, every other entry 0) takes the closed form
 /// of the same Cayley rotation, with a = ½Δω_xy:
 ///   Q = [[c, s, 0], [−s, c, 0], [0, 0, 1]],  c = (1 − a²)/(1 + a²),  s = 2a/(1 + a²),
@@ -51,13 +51,11 @@ inline State rotate_state(const State& state, const Mat3& spin_increment) {
     const double c = (1.0 - a * a) * inv, s = 2.0 * a * inv;
     State rotated = state;
     rotated.stress = rotate_about_z(state.stress, c, s);
-    rotated.plastic_strain = rotate_about_z(state.plastic_strain, c, s);
     return rotated;
   }
   const Mat3 Q = spin_rotation(spin_increment);
   State rotated = state;
   rotated.stress = Q * state.stress * Q.transpose();
-  rotated.plastic_strain = Q * state.plastic_strain * Q.transpose();
   return rotated;
 }
 

@@ -13,18 +13,19 @@ namespace soilsph::sph {
 namespace {
 using hdf5::Handle;
 
-constexpr const char* kFormat = "soilsph checkpoint 1";
-constexpr std::size_t kStateValues = 21;  ///< per soil particle: σ (9), p_c, ε^p (9), ε^p_s, Δλ
+/// Format 2 dropped format 1's accumulated plastic strain tensor (no longer part of State).
+constexpr const char* kFormat = "soilsph checkpoint 2";
+constexpr std::size_t kStateValues = 12;  ///< per soil particle: σ (9), p_c, ε^p_s, Δλ
 
 void pack(const State& s, double* out) {
-  for (int k = 0; k < 9; ++k) out[k] = s.stress(k / 3, k % 3), out[10 + k] = s.plastic_strain(k / 3, k % 3);
-  out[9] = s.pc, out[19] = s.plastic_shear_strain, out[20] = s.plastic_multiplier;
+  for (int k = 0; k < 9; ++k) out[k] = s.stress(k / 3, k % 3);
+  out[9] = s.pc, out[10] = s.plastic_shear_strain, out[11] = s.plastic_multiplier;
 }
 
 State unpack(const double* in) {
   State s;
-  for (int k = 0; k < 9; ++k) s.stress(k / 3, k % 3) = in[k], s.plastic_strain(k / 3, k % 3) = in[10 + k];
-  s.pc = in[9], s.plastic_shear_strain = in[19], s.plastic_multiplier = in[20];
+  for (int k = 0; k < 9; ++k) s.stress(k / 3, k % 3) = in[k];
+  s.pc = in[9], s.plastic_shear_strain = in[10], s.plastic_multiplier = in[11];
   return s;
 }
 
@@ -90,8 +91,11 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
   const Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, access), H5Fclose, "open " + file.string());
   const std::string where = file.string() + ":/";
-  if (H5Aexists(h5, "format") <= 0 || hdf5::read_string_attribute(h5, "format") != kFormat)
-    throw std::runtime_error(file.string() + " is not a soilsph checkpoint (format \"" + kFormat + "\")");
+  const std::string format = H5Aexists(h5, "format") > 0 ? hdf5::read_string_attribute(h5, "format") : "";
+  if (format != kFormat)
+    throw std::runtime_error(file.string() + " is not a soilsph checkpoint of this version (format \"" +
+                             kFormat + "\"" + (format.empty() ? std::string() : ", the file's is \"" + format + "\"") +
+                             "): rerun the scene");
   Checkpoint c;
   c.scene_toml = hdf5::read_string_attribute(h5, "scene");
   const auto soil = static_cast<std::size_t>(hdf5::read_double_attribute(h5, "soil_count"));

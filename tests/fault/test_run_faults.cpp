@@ -4,6 +4,7 @@
 #include <hdf5.h>
 
 #include <catch2/catch.hpp>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -213,6 +214,27 @@ TEST_CASE("resuming refuses a change that would not continue the same run", "[fa
   CHECK(r.exit_status == 2);
   CHECK_THAT(r.log, Contains("--set material.friction_angle=30: material.friction_angle cannot change when a run is "
                              "resumed"));
+}
+
+TEST_CASE("resuming refuses a checkpoint of another format, naming both", "[fault][resume]") {
+  const fs::path dir = fresh("resume-old-format");
+  REQUIRE(run_child(collapse(dir, {"--set", "scene.end_time=0.05"}), dir / "log.txt").exit_status == 0);
+  {  // relabel the checkpoint as one of the format before the plastic strain tensor was dropped
+    const hid_t file = H5Fopen((dir / "checkpoint.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    REQUIRE(H5Adelete(file, "format") >= 0);
+    const char* old_format = "soilsph checkpoint 1";
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, std::strlen(old_format));
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attribute = H5Acreate2(file, "format", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    REQUIRE(H5Awrite(attribute, type, old_format) >= 0);
+    H5Aclose(attribute), H5Sclose(space), H5Tclose(type), H5Fclose(file);
+  }
+  const auto r = run_child(resume(dir), dir / "resume-log.txt");
+  CHECK(r.exit_status != 0);
+  CHECK_THAT(r.log, Contains("is not a soilsph checkpoint of this version (format \"soilsph checkpoint 2\", the "
+                             "file's is \"soilsph checkpoint 1\"): rerun the scene"));
 }
 
 TEST_CASE("DIR/scene.toml reproduces the run", "[fault][record]") {
