@@ -112,8 +112,8 @@ template <class Model>
 void update_particle_stress(const Model& model, const Model& fallback, Particles& p, std::size_t i,
                             const VelocityGradient& L, double dt, StepFailure& failure) {
   try {
-    p.state[i] = update_splitting_on_failure(model, fallback, p.state[i], L.strain_rate() * dt,
-                                             L.spin_rate() * dt, failure);
+    p.state[i] = update_splitting_on_failure(model, fallback, p.state[i], L.strain_increment(dt),
+                                             L.spin_increment(dt), failure);
   } catch (const std::exception& e) {
     failure.record("stress update of soil particle " + std::to_string(i) + ": " + e.what());
     return;
