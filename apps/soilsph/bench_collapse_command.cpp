@@ -1,10 +1,14 @@
-// `soilsph bench collapse [--out DIR] [--scenes A,B] [--set KEY=VALUE]...`: the SPH collapse's speed,
-// as ratios to a bare SPH pair loop measured in the same run (sph/bench/bare_pair_loop.h): for each
-// scene, particle-steps/s with one thread, two and auto, the time to rest and to the end time, the
-// steps and time steps, and memory per particle. Writes DIR/bench_collapse.csv and .md.
+// `soilsph bench collapse [--out DIR] [--scenes A,B] [--set KEY=VALUE]... [--rounds N]`: the SPH
+// collapse's speed, as ratios to a bare SPH pair loop measured in the same run
+// (sph/bench/bare_pair_loop.h): for each scene, particle-steps/s with one thread, two and auto, the
+// time to rest and to the end time, the steps and time steps, and memory per particle. With N rounds
+// the runs of a scene alternate (every variant once per round, the bare loop between rounds), so that
+// a machine whose speed drifts during the bench slows every variant alike, and each row reports the
+// median. Writes DIR/bench_collapse.csv and .md.
 #include <omp.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +27,7 @@ struct BenchOptions {
   std::vector<std::string> scenes{"collapse-dp", "collapse-mcc", "sphinxsys-column-collapse"};
   std::vector<std::string> overrides;
   double bare_seconds = 1.0;
+  int rounds = 1;
 };
 
 struct Measurement {
@@ -30,9 +35,17 @@ struct Measurement {
   int threads;  ///< 0: auto
   sph::RunStatistics stats;
   sph::DepositMetrics deposit;
-  double rate;  ///< soil particle-steps/s
+  double rate;  ///< soil particle-steps/s (median over the rounds)
   double bare_rate;
+  double ratio;  ///< median over the rounds of rate / the bare loop's rate around that round
+  double wall_min, wall_max;
 };
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
 
 double peak_rss_bytes() {
   rusage usage{};
@@ -46,7 +59,7 @@ void run_bench(const BenchOptions& o) {
   const int cores = omp_get_num_procs();
   std::vector<Measurement> rows;
   std::ostringstream md;
-  md << "| scene | run | threads | t end (s) | at rest | steps | Δt min–max (µs) | wall (s) | "
+  md << "| scene | run | threads | t end (s) | at rest | steps | Δt min–max (µs) | wall (s), median (min–max) | "
         "particle-steps/s "
         "| bare loop, 1 thread | ratio | runout (cm) | height (cm) | repose (°) |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -59,7 +72,6 @@ void run_bench(const BenchOptions& o) {
     const std::span<const double> x(lattice.x.data(), lattice.soil_count),
         y(lattice.y.data(), lattice.soil_count);
     const double h = reference.geometry.smoothing_length();
-    const double bare_before = bare_pair_loop_rate(x, y, h, o.bare_seconds);
     struct Variant {
       const char* run;
       int threads;
@@ -69,40 +81,65 @@ void run_bench(const BenchOptions& o) {
     if (cores > 1) variants.push_back({"to rest", cores, false});
     variants.push_back({"to rest", 0, false});
     variants.push_back({"to end time", 0, true});
+    std::vector<double> bare_rates{bare_pair_loop_rate(x, y, h, o.bare_seconds)};
+    std::vector<std::vector<double>> walls(variants.size()), rates(variants.size());
     std::vector<Measurement> scene_rows;
-    for (const Variant& v : variants) {
-      static const std::string kToEnd = "scene.stop_at_rest=false";
-      std::vector<std::string> overrides = base;
-      if (v.to_end) overrides.push_back(kToEnd);
-      const Scene scene = load_scene(file, overrides);
-      Collapse collapse(scene);
-      const ThreadTuner tuner = v.threads == 0 ? ThreadTuner(cores, true) : ThreadTuner(v.threads, false);
-      const RunStatistics stats = collapse.run(tuner);
-      const double rate = static_cast<double>(collapse.particles().soil_count) *
-                          static_cast<double>(stats.steps) / stats.wall_seconds;
-      scene_rows.push_back({name, v.run, v.threads, stats, collapse.deposit(), rate, 0.0});
-      std::printf("%s %s threads=%s: t=%.3f s, %zu steps, %.1f s wall, %.3g particle-steps/s\n", name.c_str(),
-                  v.run, v.threads == 0 ? "auto" : std::to_string(v.threads).c_str(), stats.end_time,
-                  stats.steps, stats.wall_seconds, rate);
-      std::fflush(stdout);
+    for (int round = 0; round < o.rounds; ++round) {
+      for (std::size_t k = 0; k < variants.size(); ++k) {
+        const Variant& v = variants[k];
+        static const std::string kToEnd = "scene.stop_at_rest=false";
+        std::vector<std::string> overrides = base;
+        if (v.to_end) overrides.push_back(kToEnd);
+        const Scene scene = load_scene(file, overrides);
+        Collapse collapse(scene);
+        const ThreadTuner tuner = v.threads == 0 ? ThreadTuner(cores, true) : ThreadTuner(v.threads, false);
+        const RunStatistics stats = collapse.run(tuner);
+        const double rate = static_cast<double>(collapse.particles().soil_count) *
+                            static_cast<double>(stats.steps) / stats.wall_seconds;
+        if (round == 0) scene_rows.push_back({name, v.run, v.threads, stats, collapse.deposit(), rate, 0, 0, 0, 0});
+        walls[k].push_back(stats.wall_seconds);
+        rates[k].push_back(rate);
+        std::printf("%s %s threads=%s (round %d): t=%.3f s, %zu steps, %.1f s wall, %.3g particle-steps/s\n",
+                    name.c_str(), v.run, v.threads == 0 ? "auto" : std::to_string(v.threads).c_str(), round + 1,
+                    stats.end_time, stats.steps, stats.wall_seconds, rate);
+        std::fflush(stdout);
+      }
+      bare_rates.push_back(bare_pair_loop_rate(x, y, h, o.bare_seconds));
     }
-    const double bare_after = bare_pair_loop_rate(x, y, h, o.bare_seconds);
-    const double bare = 0.5 * (bare_before + bare_after);
-    std::printf(
-        "%s: bare pair loop %.3g particle-steps/s (before %.3g, after %.3g); memory %.0f B/particle\n",
-        name.c_str(), bare, bare_before, bare_after,
-        static_cast<double>(lattice.bytes() + scene_rows.back().stats.workspace_bytes) /
-            static_cast<double>(lattice.size()));
+    // The bare loop of round r is the mean of the measurements before and after it.
+    std::vector<double> round_bare;
+    for (int round = 0; round < o.rounds; ++round)
+      round_bare.push_back(0.5 * (bare_rates[static_cast<std::size_t>(round)] +
+                                  bare_rates[static_cast<std::size_t>(round) + 1]));
+    const double bare = median(round_bare);
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+      std::vector<double> ratios;
+      for (std::size_t r = 0; r < rates[k].size(); ++r) ratios.push_back(rates[k][r] / round_bare[r]);
+      Measurement& m = scene_rows[k];
+      m.stats.wall_seconds = median(walls[k]);
+      m.rate = median(rates[k]);
+      m.ratio = median(ratios);
+      m.wall_min = *std::min_element(walls[k].begin(), walls[k].end());
+      m.wall_max = *std::max_element(walls[k].begin(), walls[k].end());
+    }
+    std::string bare_list;
+    for (double b : bare_rates) bare_list += (bare_list.empty() ? "" : ", ") + std::to_string(b / 1e6).substr(0, 4);
+    std::printf("%s: bare pair loop %.3g particle-steps/s (median of %d rounds; measured %se6); memory %.0f "
+                "B/particle\n",
+                name.c_str(), bare, o.rounds, bare_list.c_str(),
+                static_cast<double>(lattice.bytes() + scene_rows.back().stats.workspace_bytes) /
+                    static_cast<double>(lattice.size()));
     for (Measurement& m : scene_rows) {
       m.bare_rate = bare;
       char line[512];
       std::snprintf(
           line, sizeof line,
-          "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f | %.3g | %.3g | %.2f | %.2f | %.2f | %.1f |\n",
+          "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | %.2f | %.2f | "
+          "%.1f |\n",
           m.scene.c_str(), m.run.c_str(), m.threads == 0 ? "auto" : std::to_string(m.threads).c_str(),
           m.stats.end_time, m.stats.stopped_at_rest ? "yes" : "no", m.stats.steps,
-          1e6 * m.stats.smallest_time_step, 1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.rate,
-          bare, m.rate / bare, 100 * m.deposit.runout_m, 100 * m.deposit.height_m,
+          1e6 * m.stats.smallest_time_step, 1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.wall_min,
+          m.wall_max, m.rate, bare, m.ratio, 100 * m.deposit.runout_m, 100 * m.deposit.height_m,
           m.deposit.repose_angle_deg);
       md << line;
       rows.push_back(m);
@@ -113,16 +150,17 @@ void run_bench(const BenchOptions& o) {
   }
   std::ofstream csv(o.out + "/bench_collapse.csv");
   csv << "# soilsph bench collapse: SI units; rates in soil particle-steps/s; bare_rate: bare SPH pair loop, "
-         "one "
-         "thread, same run; threads 0 = auto\n"
+         "one thread, same run; threads 0 = auto; wall_seconds, particle_steps_per_second, bare_rate and ratio "
+         "are medians over the rounds (runs alternated)\n"
          "scene,run,threads,end_time,stopped_at_rest,steps,smallest_time_step,largest_time_step,wall_seconds,"
-         "particle_steps_per_second,bare_rate,ratio,runout_m,height_m,repose_angle_deg\n";
+         "particle_steps_per_second,bare_rate,ratio,runout_m,height_m,repose_angle_deg,rounds,wall_seconds_min,"
+         "wall_seconds_max\n";
   for (const Measurement& m : rows)
     csv << m.scene << ',' << m.run << ',' << m.threads << ',' << m.stats.end_time << ','
         << (m.stats.stopped_at_rest ? 1 : 0) << ',' << m.stats.steps << ',' << m.stats.smallest_time_step
         << ',' << m.stats.largest_time_step << ',' << m.stats.wall_seconds << ',' << m.rate << ','
-        << m.bare_rate << ',' << m.rate / m.bare_rate << ',' << m.deposit.runout_m << ','
-        << m.deposit.height_m << ',' << m.deposit.repose_angle_deg << '\n';
+        << m.bare_rate << ',' << m.ratio << ',' << m.deposit.runout_m << ',' << m.deposit.height_m << ','
+        << m.deposit.repose_angle_deg << ',' << o.rounds << ',' << m.wall_min << ',' << m.wall_max << '\n';
   std::ofstream(o.out + "/bench_collapse.md") << md.str();
   std::printf("%speak memory %.0f MB; wrote %s/bench_collapse.csv and .md\n", md.str().c_str(),
               peak_rss_bytes() / 1e6, o.out.c_str());
@@ -146,6 +184,11 @@ void add_bench_collapse_command(CLI::App& bench) {
       ->take_all()
       ->allow_extra_args(false);
   cmd->add_option("--bare-seconds", o->bare_seconds, "time spent on each bare-loop measurement")
+      ->capture_default_str();
+  cmd->add_option("--rounds", o->rounds,
+                  "runs of every variant, alternated; each row reports the median (a drifting machine slows "
+                  "all alike)")
+      ->check(CLI::Range(1, 99))
       ->capture_default_str();
   cmd->callback([o] { run_bench(*o); });
 }
