@@ -25,8 +25,10 @@ inline Mat3 spin_rotation(const Mat3& spin_increment) {
 /// loads read back (a store-forwarding stall, 30 % of this function's samples in the SPH step).
 inline Mat3 rotate_about_z(const Mat3& a, double c, double s) {
   // Q a, rows 0 and 1 (row 2 is a's)
-  const double b00 = c * a(0, 0) + s * a(1, 0), b01 = c * a(0, 1) + s * a(1, 1), b02 = c * a(0, 2) + s * a(1, 2);
-  const double b10 = c * a(1, 0) - s * a(0, 0), b11 = c * a(1, 1) - s * a(0, 1), b12 = c * a(1, 2) - s * a(0, 2);
+  const double b00 = c * a(0, 0) + s * a(1, 0), b01 = c * a(0, 1) + s * a(1, 1),
+               b02 = c * a(0, 2) + s * a(1, 2);
+  const double b10 = c * a(1, 0) - s * a(0, 0), b11 = c * a(1, 1) - s * a(0, 1),
+               b12 = c * a(1, 2) - s * a(0, 2);
   Mat3 r;  // (Q a) Qᵀ
   r(0, 0) = c * b00 + s * b01, r(0, 1) = c * b01 - s * b00, r(0, 2) = b02;
   r(1, 0) = c * b10 + s * b11, r(1, 1) = c * b11 - s * b10, r(1, 2) = b12;

@@ -7,10 +7,10 @@
 namespace soilsph {
 
 struct State {
-  Mat3 stress = Mat3::Zero();          ///< effective stress σ, tension-positive (Pa)
-  double pc = 0.0;                     ///< preconsolidation pressure p_c (the paper's p0), compression-positive (Pa)
-  double plastic_shear_strain = 0.0;   ///< accumulated equivalent plastic strain ∫ sqrt(2/3 dε^p:dε^p)
-  double plastic_multiplier = 0.0;     ///< Δλ of the last update (≥ 0), a diagnostic
+  Mat3 stress = Mat3::Zero();  ///< effective stress σ, tension-positive (Pa)
+  double pc = 0.0;             ///< preconsolidation pressure p_c (the paper's p0), compression-positive (Pa)
+  double plastic_shear_strain = 0.0;  ///< accumulated equivalent plastic strain ∫ sqrt(2/3 dε^p:dε^p)
+  double plastic_multiplier = 0.0;    ///< Δλ of the last update (≥ 0), a diagnostic
 };
 
 /// Where an updated state lies among the corners of a model's stress space that integrators find
@@ -23,7 +23,7 @@ struct StateMarks {
 
 /// Adds a plastic strain increment to the accumulated measure of `state`. The accumulated tensor is
 /// not kept: no output, hardening law or driver reads it (MCC hardens on each increment's volumetric
-/// part), and carrying it cost the SPH step a second rotation and 72 bytes per particle.
+/// part), and carrying it cost the SPH step a second rotation and 72 bytes per soil particle.
 inline void accumulate_plastic_strain(State& state, const Mat3& d_plastic_strain) {
   state.plastic_shear_strain += std::sqrt(2.0 / 3.0 * ddot(d_plastic_strain, d_plastic_strain));
 }

@@ -59,7 +59,8 @@ void run_bench(const BenchOptions& o) {
   const int cores = omp_get_num_procs();
   std::vector<Measurement> rows;
   std::ostringstream md;
-  md << "| scene | run | threads | t end (s) | at rest | steps | Δt min–max (µs) | wall (s), median (min–max) | "
+  md << "| scene | run | threads | t end (s) | at rest | steps | Δt min–max (µs) | wall (s), median "
+        "(min–max) | "
         "particle-steps/s "
         "| bare loop, 1 thread | ratio | runout (cm) | height (cm) | repose (°) |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -96,12 +97,13 @@ void run_bench(const BenchOptions& o) {
         const RunStatistics stats = collapse.run(tuner);
         const double rate = static_cast<double>(collapse.particles().soil_count) *
                             static_cast<double>(stats.steps) / stats.wall_seconds;
-        if (round == 0) scene_rows.push_back({name, v.run, v.threads, stats, collapse.deposit(), rate, 0, 0, 0, 0});
+        if (round == 0)
+          scene_rows.push_back({name, v.run, v.threads, stats, collapse.deposit(), rate, 0, 0, 0, 0});
         walls[k].push_back(stats.wall_seconds);
         rates[k].push_back(rate);
         std::printf("%s %s threads=%s (round %d): t=%.3f s, %zu steps, %.1f s wall, %.3g particle-steps/s\n",
-                    name.c_str(), v.run, v.threads == 0 ? "auto" : std::to_string(v.threads).c_str(), round + 1,
-                    stats.end_time, stats.steps, stats.wall_seconds, rate);
+                    name.c_str(), v.run, v.threads == 0 ? "auto" : std::to_string(v.threads).c_str(),
+                    round + 1, stats.end_time, stats.steps, stats.wall_seconds, rate);
         std::fflush(stdout);
       }
       bare_rates.push_back(bare_pair_loop_rate(x, y, h, o.bare_seconds));
@@ -123,24 +125,27 @@ void run_bench(const BenchOptions& o) {
       m.wall_max = *std::max_element(walls[k].begin(), walls[k].end());
     }
     std::string bare_list;
-    for (double b : bare_rates) bare_list += (bare_list.empty() ? "" : ", ") + std::to_string(b / 1e6).substr(0, 4);
-    std::printf("%s: bare pair loop %.3g particle-steps/s (median of %d rounds; measured %se6); memory %.0f "
-                "B/particle\n",
-                name.c_str(), bare, o.rounds, bare_list.c_str(),
-                static_cast<double>(lattice.bytes() + scene_rows.back().stats.workspace_bytes) /
-                    static_cast<double>(lattice.size()));
+    for (double b : bare_rates)
+      bare_list += (bare_list.empty() ? "" : ", ") + std::to_string(b / 1e6).substr(0, 4);
+    std::printf(
+        "%s: bare pair loop %.3g particle-steps/s (median of %d rounds; measured %se6); memory %.0f "
+        "B/particle\n",
+        name.c_str(), bare, o.rounds, bare_list.c_str(),
+        static_cast<double>(lattice.bytes() + scene_rows.back().stats.workspace_bytes) /
+            static_cast<double>(lattice.size()));
     for (Measurement& m : scene_rows) {
       m.bare_rate = bare;
       char line[512];
-      std::snprintf(
-          line, sizeof line,
-          "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | %.2f | %.2f | "
-          "%.1f |\n",
-          m.scene.c_str(), m.run.c_str(), m.threads == 0 ? "auto" : std::to_string(m.threads).c_str(),
-          m.stats.end_time, m.stats.stopped_at_rest ? "yes" : "no", m.stats.steps,
-          1e6 * m.stats.smallest_time_step, 1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.wall_min,
-          m.wall_max, m.rate, bare, m.ratio, 100 * m.deposit.runout_m, 100 * m.deposit.height_m,
-          m.deposit.repose_angle_deg);
+      std::snprintf(line, sizeof line,
+                    "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | "
+                    "%.2f | %.2f | "
+                    "%.1f |\n",
+                    m.scene.c_str(), m.run.c_str(),
+                    m.threads == 0 ? "auto" : std::to_string(m.threads).c_str(), m.stats.end_time,
+                    m.stats.stopped_at_rest ? "yes" : "no", m.stats.steps, 1e6 * m.stats.smallest_time_step,
+                    1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.wall_min, m.wall_max, m.rate,
+                    bare, m.ratio, 100 * m.deposit.runout_m, 100 * m.deposit.height_m,
+                    m.deposit.repose_angle_deg);
       md << line;
       rows.push_back(m);
     }
@@ -150,10 +155,12 @@ void run_bench(const BenchOptions& o) {
   }
   std::ofstream csv(o.out + "/bench_collapse.csv");
   csv << "# soilsph bench collapse: SI units; rates in soil particle-steps/s; bare_rate: bare SPH pair loop, "
-         "one thread, same run; threads 0 = auto; wall_seconds, particle_steps_per_second, bare_rate and ratio "
+         "one thread, same run; threads 0 = auto; wall_seconds, particle_steps_per_second, bare_rate and "
+         "ratio "
          "are medians over the rounds (runs alternated)\n"
          "scene,run,threads,end_time,stopped_at_rest,steps,smallest_time_step,largest_time_step,wall_seconds,"
-         "particle_steps_per_second,bare_rate,ratio,runout_m,height_m,repose_angle_deg,rounds,wall_seconds_min,"
+         "particle_steps_per_second,bare_rate,ratio,runout_m,height_m,repose_angle_deg,rounds,wall_seconds_"
+         "min,"
          "wall_seconds_max\n";
   for (const Measurement& m : rows)
     csv << m.scene << ',' << m.run << ',' << m.threads << ',' << m.stats.end_time << ','

@@ -64,10 +64,12 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
     for_each_count(loop, [&](const char* name, std::size_t v) {
       hdf5::write_double_attribute(h5, name, static_cast<double>(v));  // exact below 2^53
     });
-    p.for_each_array([&](const char* name, const std::vector<double>& a) { hdf5::write_doubles(h5, name, a, where); });
+    p.for_each_array(
+        [&](const char* name, const std::vector<double>& a) { hdf5::write_doubles(h5, name, a, where); });
     std::vector<double> states(kStateValues * soil);
     for (std::size_t i = 0; i < soil; ++i) pack(p.state[i], &states[kStateValues * i]);
-    hdf5::write_dataset(h5, "state", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, soil, kStateValues, states.data(), where);
+    hdf5::write_dataset(h5, "state", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, soil, kStateValues, states.data(),
+                        where);
     hdf5::write_dataset(h5, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, soil, 1, p.layer.data(), where);
     hdf5::write_dataset(h5, "boundary_kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, p.boundary_kind.size(), 1,
                         p.boundary_kind.data(), where);
@@ -86,16 +88,17 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
 
 Checkpoint read_checkpoint(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file))
-    throw std::runtime_error(file.string() + " does not exist: nothing to resume (a run writes it every "
+    throw std::runtime_error(file.string() +
+                             " does not exist: nothing to resume (a run writes it every "
                              "[output] checkpoint_interval, at rest, on a signal and before its end)");
   const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
   const Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, access), H5Fclose, "open " + file.string());
   const std::string where = file.string() + ":/";
   const std::string format = H5Aexists(h5, "format") > 0 ? hdf5::read_string_attribute(h5, "format") : "";
   if (format != kFormat)
-    throw std::runtime_error(file.string() + " is not a soilsph checkpoint of this version (format \"" +
-                             kFormat + "\"" + (format.empty() ? std::string() : ", the file's is \"" + format + "\"") +
-                             "): rerun the scene");
+    throw std::runtime_error(
+        file.string() + " is not a soilsph checkpoint of this version (format \"" + kFormat + "\"" +
+        (format.empty() ? std::string() : ", the file's is \"" + format + "\"") + "): rerun the scene");
   Checkpoint c;
   c.scene_toml = hdf5::read_string_attribute(h5, "scene");
   const auto soil = static_cast<std::size_t>(hdf5::read_double_attribute(h5, "soil_count"));
@@ -122,8 +125,10 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
                      c.particles.boundary_kind.data(), where);
   c.loop.search_x.resize(c.particles.size());
   c.loop.search_y.resize(c.particles.size());
-  hdf5::read_dataset(h5, "search_x", H5T_NATIVE_DOUBLE, c.loop.search_x.size(), c.loop.search_x.data(), where);
-  hdf5::read_dataset(h5, "search_y", H5T_NATIVE_DOUBLE, c.loop.search_y.size(), c.loop.search_y.data(), where);
+  hdf5::read_dataset(h5, "search_x", H5T_NATIVE_DOUBLE, c.loop.search_x.size(), c.loop.search_x.data(),
+                     where);
+  hdf5::read_dataset(h5, "search_y", H5T_NATIVE_DOUBLE, c.loop.search_y.size(), c.loop.search_y.data(),
+                     where);
   return c;
 }
 

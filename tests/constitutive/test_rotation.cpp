@@ -68,7 +68,8 @@ TEST_CASE("a spin about z alone takes the closed form of the same Cayley rotatio
     // The closed form on a tensor that is not symmetric rotates it the same way.
     Mat3 a = test::random_symmetric(rng, 1e-2);
     a(0, 2) += 1e-3, a(2, 1) -= 2e-3;
-    const double half = 0.5 * w(0, 1), c = (1.0 - half * half) / (1.0 + half * half), sn = 2.0 * half / (1.0 + half * half);
+    const double half = 0.5 * w(0, 1), c = (1.0 - half * half) / (1.0 + half * half),
+                 sn = 2.0 * half / (1.0 + half * half);
     CHECK((rotate_about_z(a, c, sn) - Q * a * Q.transpose()).norm() < 1e-14 * a.norm());
   }
 }

@@ -113,7 +113,8 @@ double json_number(const std::string& json, const std::string& key) {
 
 /// Frames at 0, interval, ..., end, each once (a frame is written at the step within half a step
 /// dt of its time), plus the one at `stop` when that step is not also one of them.
-void check_frame_times(const std::vector<double>& times, double interval, double end, double dt, double stop) {
+void check_frame_times(const std::vector<double>& times, double interval, double end, double dt,
+                       double stop) {
   const auto regular = static_cast<std::size_t>(std::lround(end / interval)) + 1;
   std::vector<int> seen(regular, 0);
   std::size_t other = 0;
@@ -137,7 +138,8 @@ void check_frame_times(const std::vector<double>& times, double interval, double
 }
 
 /// The last frame of the same run uninterrupted, in its own folder (ctest runs test cases in parallel).
-void check_bit_identical(const Frames& resumed, const std::string& test, std::vector<std::string> extra = {}) {
+void check_bit_identical(const Frames& resumed, const std::string& test,
+                         std::vector<std::string> extra = {}) {
   const fs::path dir = fresh(test + "-uninterrupted");
   REQUIRE(run_child(collapse(dir, extra), dir / "log.txt").exit_status == 0);
   const Frames full = read_frames(dir);
@@ -166,14 +168,16 @@ TEST_CASE("SIGTERM: the run stops cleanly, and resumed it ends bit for bit as on
   const auto resumed = run_child(resume(dir), dir / "resume-log.txt");
   INFO(resumed.log);
   REQUIRE(resumed.exit_status == 0);
-  CHECK_THAT(text_of(dir / "summary.json"),
-             Contains("\"complete\": true") && Contains("\"end_time\": 1.5,") && !Contains("\"resumed_from\": null"));
+  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": true") &&
+                                                Contains("\"end_time\": 1.5,") &&
+                                                !Contains("\"resumed_from\": null"));
   // t = 0, 0.01, ..., 1.5, none lost or twice, and the frame at the stop unless that step was one of
   // them anyway (about one run in a hundred: 1 % of the steps write a frame).
   const Frames frames = read_frames(dir);
   const std::string marker = "stopped by SIGTERM at t = ";
   const double stop = std::stod(stopped.log.substr(stopped.log.find(marker) + marker.size()));
-  check_frame_times(frames.times, 0.01, 1.5, json_number(text_of(dir / "summary.json"), "largest_time_step"), stop);
+  check_frame_times(frames.times, 0.01, 1.5, json_number(text_of(dir / "summary.json"), "largest_time_step"),
+                    stop);
   check_bit_identical(frames, "sigterm");
 }
 
@@ -190,7 +194,8 @@ TEST_CASE("kill -9: every file left is readable, and the run resumes from its la
   REQUIRE(killed.signal == SIGKILL);
   CHECK_NOTHROW(read_frames(dir));
   // The record written at the start says the run never finished.
-  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("\"stop_reason\": \"running\""));
+  CHECK_THAT(text_of(dir / "summary.json"),
+             Contains("\"complete\": false") && Contains("\"stop_reason\": \"running\""));
   const auto resumed = run_child(resume(dir), dir / "resume-log.txt");
   INFO(resumed.log);
   REQUIRE(resumed.exit_status == 0);
@@ -199,7 +204,8 @@ TEST_CASE("kill -9: every file left is readable, and the run resumes from its la
   check_bit_identical(frames, "kill9", dense_frames);
 }
 
-TEST_CASE("a full disk ends the run with one line, and the frames written before stay readable", "[fault][disk]") {
+TEST_CASE("a full disk ends the run with one line, and the frames written before stay readable",
+          "[fault][disk]") {
   const fs::path dir = fresh("disk-full");
   ChildOptions small;
   // A file-size limit (ulimit -f, per file) that a frame (28 kB) fits in and the first checkpoint
@@ -209,7 +215,8 @@ TEST_CASE("a full disk ends the run with one line, and the frames written before
   INFO(r.log);
   CHECK(r.signal == 0);
   CHECK(r.exit_status == 1);
-  CHECK_THAT(r.log, Contains("error: ") && Contains("checkpoint.h5.tmp would grow past this process's file-size limit"));
+  CHECK_THAT(r.log, Contains("error: ") &&
+                        Contains("checkpoint.h5.tmp would grow past this process's file-size limit"));
   CHECK(r.log.find("HDF5-DIAG") == std::string::npos);  // HDF5's own error stack stays silent
   const Frames frames = read_frames(dir);
   CHECK(frames.count == 6);  // t = 0 ... 0.05
@@ -234,8 +241,8 @@ TEST_CASE("a blow-up stops the run, naming the particle, quantity, step and time
 TEST_CASE("a rerun into a used folder leaves nothing of the old run beside the new one", "[fault][stale]") {
   const fs::path dir = fresh("stale");
   REQUIRE(run_child({SOILSPH_EXECUTABLE, "collapse", SOILSPH_SOURCE_DIR "/data/scenes/collapse-mcc.toml",
-                     "--threads", "1", "--out", dir.string(), "--set", "scene.particle_spacing=0.004", "--set",
-                     "scene.end_time=0.05"},
+                     "--threads", "1", "--out", dir.string(), "--set", "scene.particle_spacing=0.004",
+                     "--set", "scene.end_time=0.05"},
                     dir / "log.txt")
               .exit_status == 0);
   std::ofstream(dir / "deposit.png") << "a picture of the first run";
@@ -257,8 +264,9 @@ TEST_CASE("resuming refuses a change that would not continue the same run", "[fa
   args.insert(args.end(), {"--set", "material.friction_angle=30"});
   const auto r = run_child(args, dir / "resume-log.txt");
   CHECK(r.exit_status == 2);
-  CHECK_THAT(r.log, Contains("--set material.friction_angle=30: material.friction_angle cannot change when a run is "
-                             "resumed"));
+  CHECK_THAT(r.log,
+             Contains("--set material.friction_angle=30: material.friction_angle cannot change when a run is "
+                      "resumed"));
 }
 
 TEST_CASE("resuming refuses a checkpoint of another format, naming both", "[fault][resume]") {
@@ -278,15 +286,16 @@ TEST_CASE("resuming refuses a checkpoint of another format, naming both", "[faul
   }
   const auto r = run_child(resume(dir), dir / "resume-log.txt");
   CHECK(r.exit_status != 0);
-  CHECK_THAT(r.log, Contains("is not a soilsph checkpoint of this version (format \"soilsph checkpoint 2\", the "
-                             "file's is \"soilsph checkpoint 1\"): rerun the scene"));
+  CHECK_THAT(r.log,
+             Contains("is not a soilsph checkpoint of this version (format \"soilsph checkpoint 2\", the "
+                      "file's is \"soilsph checkpoint 1\"): rerun the scene"));
 }
 
 TEST_CASE("DIR/scene.toml reproduces the run", "[fault][record]") {
   const fs::path first = fresh("record-first"), second = fresh("record-second");
   REQUIRE(run_child(collapse(first, {"--set", "scene.end_time=0.1"}), first / "log.txt").exit_status == 0);
-  REQUIRE(run_child({SOILSPH_EXECUTABLE, "collapse", (first / "scene.toml").string(), "--threads", "1", "--out",
-                     second.string()},
+  REQUIRE(run_child({SOILSPH_EXECUTABLE, "collapse", (first / "scene.toml").string(), "--threads", "1",
+                     "--out", second.string()},
                     second / "log.txt")
               .exit_status == 0);
   CHECK(read_frames(second).last == read_frames(first).last);
