@@ -18,7 +18,9 @@
 /// next (up to `max_interval` chunks), so on a steady machine the trials cost about 1 % of the run;
 /// a switch resets it, so a change of load is followed within a few chunks. Timing noise can make a
 /// trial look faster than it is: measured, auto lost 11 % against two fixed threads on one idle
-/// run of 6525 particles, and matched them on the others (docs/sph.md, Performance).
+/// run of 6525 particles, and matched them on the others; the 14–16 % losses of a later
+/// single-round bench were the VM's drift between runs, not the tuner (it ran 99 % of the steps on
+/// two threads, and matched them alternated: docs/sph.md, Session 18).
 #include <algorithm>
 #include <cstddef>
 
