@@ -57,12 +57,6 @@ class NeighbourList {
     double w;       ///< W_ij
     double gx, gy;  ///< ∇_i W_ij = dW/dr (x_i − x_j)/r (1/m³)
   };
-  /// Calls f(pair) for every pair of particle i, as filled by fill_row().
-  template <class F>
-  void for_each_pair(std::size_t i, F&& f) const {
-    for (std::size_t k = i * slots_, last = k + count_[i]; k < last; ++k)
-      f(Pair{static_cast<std::size_t>(neighbour[k]), rx[k], ry[k], w[k], gx[k], gy[k]});
-  }
   /// Number of pairs of particle i.
   std::size_t pair_count(std::size_t i) const { return count_[i]; }
   /// The pairs of particle i as contiguous arrays (pair k: neighbour j[k], x_i − x_j = (rx[k], ry[k]),
@@ -76,6 +70,13 @@ class NeighbourList {
     const std::size_t k = i * slots_;
     return {neighbour.data() + k, rx.data() + k, ry.data() + k, w.data() + k,
             gx.data() + k,        gy.data() + k, count_[i]};
+  }
+  /// Calls f(pair) for every pair of particle i, as filled by fill_row().
+  template <class F>
+  void for_each_pair(std::size_t i, F&& f) const {
+    const Row r = row(i);
+    for (std::size_t k = 0; k < r.size; ++k)
+      f(Pair{static_cast<std::size_t>(r.j[k]), r.rx[k], r.ry[k], r.w[k], r.gx[k], r.gy[k]});
   }
 
   std::size_t size() const { return count_.size(); }
