@@ -23,9 +23,11 @@
 /// flow rule's volumetric part r1(v, Δλ) = 0 and the yield condition f(p, q, p_c) = 0 (eq 24). For a
 /// given Δλ, v(Δλ) is found by safeguarded Newton in a bracket; the outer equation f(Δλ) = 0 by
 /// safeguarded Newton with its exact derivative, from f(0) > 0. Before that, plain Newton on both
-/// unknowns together from the first-order estimate at the entry (one evaluation per iteration instead
-/// of an inner solve per outer one) is tried and kept when it converges inside v's bracket; in the SPH
-/// collapse it does for 96 % of the returns, and the update costs 1.4–1.9× less (docs/integrators.md).
+/// unknowns together (one evaluation per iteration instead of an inner solve per outer one) is tried
+/// from the first-order estimate at the entry or, for an increment whose plastic shear dwarfs the
+/// elastic one (a dust particle at the free surface), from the stress kept at the entry, and kept
+/// when it converges inside v's bracket; in the SPH collapse it does for all but ~1e-5 of the
+/// returns, and the update costs 1.4–1.9× less (docs/integrators.md).
 /// Non-convergence throws IntegrationError.
 /// The consistent tangent follows from the implicit-function theorem on (r1, f), including how the
 /// entry σ_t moves with Δε: see docs/integrators.md.

@@ -120,11 +120,12 @@ TEST_CASE("implicit MCC returns SPH-size increments from small surfaces onto the
           "[integrators]") {
   // Particles near the free surface in the SPH collapse: on the surface on the wet side (p = 0.6 p_c),
   // one step's shear and extension, which add about 0.4, 4 and 5000 times the surface's q
-  // (0.7 p_c) for p_c = 300, 3 and 0.025 Pa; the first two are solved by the return's fast path
-  // (Newton on both unknowns from the entry's estimate), the last, with its perturbations, by the
-  // safeguarded solver it falls back to (checked with a debug print when this test was written).
-  // Both must find the same root: on the surface, p_c from the hardening law, and a consistent
-  // tangent that matches central differences (a solver that jumped between roots would not).
+  // (0.7 p_c) for p_c = 300, 3 and 0.025 Pa, with z = 6GΔλ ≈ 0.3, 3.4 and > 1e3: the return's fast path
+  // (Newton on both unknowns) solves the first from the estimate's flow and the other two from the
+  // stress kept at the entry (checked with a debug print); before that start existed, the last went
+  // to the safeguarded solver, which the stress test and the point tests still reach. Every path
+  // must find the same root: on the surface, p_c from the hardening law, and a consistent tangent
+  // that matches central differences (a solver that jumped between roots would not).
   const ModifiedCamClay mcc(with(test::table1_cam_clay_params(Elasticity::Kind::Constant), Integrator::Implicit));
   const double K = mcc.elasticity().at(0.0).K, M = mcc.M();
   for (auto [pc, scale] : {std::pair{300.0, 1.0}, {3.0, 0.1}, {0.025, 1.0}}) {
