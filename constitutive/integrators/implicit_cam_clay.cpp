@@ -19,6 +19,23 @@ constexpr double kAbsoluteVolume = 1e-20;     ///< plastic volume below which v 
 constexpr double kResidualTolerance = 1e-14;  ///< |r1| relative to its terms at convergence
 constexpr int kJointIterations = 12;           ///< plain Newton on (v, Δλ) before the safeguarded solver
 
+/// The terms of an increment Δε from `start` that the entry search and the return equations share,
+/// computed once per update.
+struct IncrementTerms {
+  IncrementTerms(const State& start, const Mat3& d_eps)
+      : p_n(mean_pressure(start.stress)),
+        pc_n(start.pc),
+        d_eps_v(-d_eps.trace()),
+        s_n(deviator(start.stress)),
+        d_e(deviator(d_eps)),
+        S0(ddot(s_n, s_n)),
+        S1(ddot(s_n, d_e)),
+        S2(ddot(d_e, d_e)) {}
+  double p_n, pc_n, d_eps_v;  ///< p_n, p_c,n, Δε_v (compression-positive)
+  Mat3 s_n, d_e;              ///< dev σ_n, dev Δε
+  double S0, S1, S2;          ///< s_n:s_n, s_n:Δe, Δe:Δe
+};
+
 /// Where the elastic path σ_e(t) = σ_n + D_sec(tΔε):tΔε of an increment meets the yield surface, and
 /// how that point moves with Δε: the flow of the increment starts there. t = 0 (the start itself)
 /// unless the start is strictly inside.
@@ -34,9 +51,9 @@ struct YieldEntry {
   Mat3 grad_t = Mat3::Zero();  ///< dt*/dΔε
 
   /// The entry of an increment that starts on the surface: the start itself, fixed.
-  static YieldEntry at(const State& start) {
+  static YieldEntry at(const IncrementTerms& increment) {
     YieldEntry entry;
-    entry.p = mean_pressure(start.stress), entry.s = deviator(start.stress);
+    entry.p = increment.p_n, entry.s = increment.s_n;
     return entry;
   }
   /// X : ds_e/dΔε, a stress-like tensor.
@@ -52,13 +69,13 @@ struct YieldEntry {
 
 /// The entry point of a plastic increment: F(t) = f(σ_e(t), p_c,n) = 0 on (0, 1) with F(0) < 0 < F(1),
 /// by safeguarded Newton with the exact F'(t); t* then moves with Δε as dt* = −∂F/∂Δε / F'(t*).
-YieldEntry yield_entry(const ModifiedCamClay& model, const State& start, const Mat3& d_eps) {
+YieldEntry yield_entry(const ModifiedCamClay& model, const IncrementTerms& increment) {
   const Elasticity& elasticity = model.elasticity();
-  const double M2 = model.M() * model.M(), pc = start.pc;
-  const double p_n = mean_pressure(start.stress), d_eps_v = -d_eps.trace();
-  const Mat3 s_n = deviator(start.stress), d_e = deviator(d_eps);
-  const double S0 = ddot(s_n, s_n), S1 = ddot(s_n, d_e), S2 = ddot(d_e, d_e);
-  YieldEntry entry = YieldEntry::at(start);
+  const double M2 = model.M() * model.M(), pc = increment.pc_n;
+  const double p_n = increment.p_n, d_eps_v = increment.d_eps_v;
+  const Mat3 &s_n = increment.s_n, &d_e = increment.d_e;
+  const double S0 = increment.S0, S1 = increment.S1, S2 = increment.S2;
+  YieldEntry entry = YieldEntry::at(increment);
   const double f_start = M2 * p_n * (p_n - pc) + 1.5 * S0;
   if (!(f_start < -kYieldTolerance * M2 * pc * pc)) return entry;  // on (or beyond) the surface
 
@@ -117,24 +134,25 @@ YieldEntry yield_entry(const ModifiedCamClay& model, const State& start, const M
 /// Volumetric part: r1 = v − M²[w_t (2p_t − p_c,n) + w_e (2p − p_c)].
 class CamClayReturn {
  public:
-  CamClayReturn(const ModifiedCamClay& model, const State& start, const Mat3& d_eps, double alpha,
+  CamClayReturn(const ModifiedCamClay& model, const IncrementTerms& increment, double alpha,
                 const YieldEntry& entry)
       : model_(model),
         entry_(entry),
         alpha_(alpha),
         M2_(model.M() * model.M()),
         theta_(model.hardening_exponent()),
-        p_n_(mean_pressure(start.stress)),
-        pc_n_(start.pc),
-        d_eps_v_(-d_eps.trace()),
-        s_n_(deviator(start.stress)),
-        d_e_(deviator(d_eps)),
-        S0_(ddot(s_n_, s_n_)),
-        S1_(ddot(s_n_, d_e_)),
-        S2_(ddot(d_e_, d_e_)),
-        T0_(ddot(entry.s, s_n_)),
-        T1_(ddot(entry.s, d_e_)),
-        T2_(ddot(entry.s, entry.s)),
+        p_n_(increment.p_n),
+        pc_n_(increment.pc_n),
+        d_eps_v_(increment.d_eps_v),
+        s_n_(increment.s_n),
+        d_e_(increment.d_e),
+        S0_(increment.S0),
+        S1_(increment.S1),
+        S2_(increment.S2),
+        // An entry at the start (t = 0) is s_n itself (YieldEntry::at).
+        T0_(entry.t > 0.0 ? ddot(entry.s, s_n_) : S0_),
+        T1_(entry.t > 0.0 ? ddot(entry.s, d_e_) : S1_),
+        T2_(entry.t > 0.0 ? ddot(entry.s, entry.s) : S0_),
         entry_flow_p_(2.0 * entry.p - pc_n_),
         p_trial_(model.elasticity().pressure_after(p_n_, d_eps_v_)) {}
 
@@ -427,6 +445,7 @@ class CamClayReturn {
     return (s_n_ + 2.0 * x.G * d_e_ - x.kG * entry_.s) / x.B - x.p * identity3();
   }
   double M2() const { return M2_; }
+  const YieldEntry& entry() const { return entry_; }
 
  private:
   const ModifiedCamClay& model_;
@@ -440,12 +459,12 @@ class CamClayReturn {
   double p_trial_;       ///< p of the elastic trial
 };
 
-/// The plastic return of an increment whose elastic trial (`trial`, evaluated with any entry: at
-/// Δλ = 0 only its entry-free fields are read) is outside the surface.
-State plastic_return(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
-                     const YieldEntry& entry, const CamClayReturn::Point& trial, Mat6* tangent,
-                     double* local_error) {
-  const CamClayReturn eqs(model, start, strain_increment, model.implicit_alpha(), entry);
+/// The plastic return of an increment, with the equations `eqs` from its entry to the surface, whose
+/// elastic trial (`trial`, evaluated with any entry: at Δλ = 0 only its entry-free fields are read) is
+/// outside the surface.
+State plastic_return(const ModifiedCamClay& model, const State& start, const CamClayReturn& eqs,
+                     const CamClayReturn::Point& trial, Mat6* tangent, double* local_error) {
+  const YieldEntry& entry = eqs.entry();
   // Outer safeguarded Newton on Δλ: f > 0 on [0, lo], f < 0 at hi once found.
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
   // A first estimate from the trial's normal, n:D:n (the scale of the multiplier).
@@ -519,8 +538,9 @@ State implicit_return(const ModifiedCamClay& model, const State& start, const Ma
   if (local_error) *local_error = 0.0;
   if (!(start.pc > 0.0)) throw IntegrationError("implicit (modified-cam-clay): p_c must be positive");
   // The elastic trial (Δλ = 0: the flow weights and the entry play no part).
-  const YieldEntry start_entry = YieldEntry::at(start);
-  const CamClayReturn eqs(model, start, strain_increment, model.implicit_alpha(), start_entry);
+  const IncrementTerms increment(start, strain_increment);
+  const YieldEntry start_entry = YieldEntry::at(increment);
+  const CamClayReturn eqs(model, increment, model.implicit_alpha(), start_entry);
   const CamClayReturn::Point trial = eqs.at(0.0, 0.0);
   if (trial.f <= 0.0) {
     State next = start;
@@ -529,8 +549,11 @@ State implicit_return(const ModifiedCamClay& model, const State& start, const Ma
     if (tangent) *tangent = eqs.tangent(trial, false);
     return next;
   }
-  return plastic_return(model, start, strain_increment, yield_entry(model, start, strain_increment), trial,
-                        tangent, local_error);
+  // An increment that starts on the surface (entry t = 0) has the trial's equations.
+  const YieldEntry entry = yield_entry(model, increment);
+  if (entry.t == 0.0) return plastic_return(model, start, eqs, trial, tangent, local_error);
+  const CamClayReturn entry_eqs(model, increment, model.implicit_alpha(), entry);
+  return plastic_return(model, start, entry_eqs, trial, tangent, local_error);
 }
 
 namespace {
