@@ -3,7 +3,7 @@
 `soilsph collapse` runs whose summary.json files are gathered into one CSV and one figure.
 Run with Debian's /usr/bin/python3 (matplotlib, numpy).
 
-    scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--jobs 2] [--reuse]
+    scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--block paper|fixed] [--jobs 2] [--reuse]
     scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2] [--integrators shipped,implicit]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
     scripts/sph_study.py cut        [--out DIR] [--heights 3,4,...] [--spacings 2,1]
@@ -17,6 +17,11 @@ resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes. Writes DIR/resol
   differences from the finest run, Richardson's observed order and extrapolated value where three
   spacings converge monotonically, and wall time; DIR/resolution.png: error against wall time,
   log-log, per model and measure (the SPH counterpart of the work-precision figure).
+  --block fixed refines one W x H block: the column keys put particle centres on the edges of W x H
+  (the paper's layout), a block of (W + dp) x (H + dp) that shrinks as dp does, so each run takes
+  column_width W - dp, column_height H - dp and toe_thickness H/10, and the table reports the
+  measures from the walls' faces to the cells' edges (runout, H/10 runout and height + dp; the
+  CSV adds them as runout_face_m, runout_thick_face_m, height_face_m).
 cfl: the shipped scenes at one spacing for each CFL number, with the shipped and the implicit
   integrator; a run counts as unstable if it fails, if the wall guard acts, or if it is not at rest by
   its end time (2 s). Writes DIR/cfl.csv and DIR/cfl.md.
@@ -38,16 +43,24 @@ import argparse
 import csv
 import json
 import math
+import os
 import pathlib
 import subprocess
 import sys
+import tomllib
 from concurrent.futures import ThreadPoolExecutor
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-SOILSPH = ROOT / "build" / "apps" / "soilsph" / "soilsph"
+# The binary: $SOILSPH_BINARY (the tests give their build's), else the README's build.
+SOILSPH = pathlib.Path(os.environ.get("SOILSPH_BINARY", ROOT / "build" / "apps" / "soilsph" / "soilsph"))
 SCENES = {"D-P": "collapse-dp", "MCC": "collapse-mcc"}
 MEASURES = (("runout_m", "runout", 100.0, "cm"), ("runout_thick_m", "runout where H0/10 thick", 100.0, "cm"),
             ("height_m", "height", 100.0, "cm"), ("repose_angle_deg", "repose angle", 1.0, "deg"))
+# --block fixed: the same measures from the walls' faces to the cells' edges (each length + dp).
+FACE_MEASURES = (("runout_face_m", "runout from the wall's face", 100.0, "cm"),
+                 ("runout_thick_face_m", "runout where H0/10 thick, from the face", 100.0, "cm"),
+                 ("height_face_m", "height above the floor's face", 100.0, "cm"),
+                 ("repose_angle_deg", "repose angle", 1.0, "deg"))
 
 
 def run(name, scene, overrides, out, reuse=False):
@@ -115,19 +128,38 @@ def richardson(h, v):
     return (order, v[2] + d2 / (2 ** order - 1)) if order >= 0.5 else None
 
 
+def block_overrides(scene, spacing_m, block):
+    """The --set values of one run: the spacing and, for the fixed block, the column keys that keep
+    the soil between the walls at the scene's W x H and the toe thickness at its H/10."""
+    overrides = [f"scene.particle_spacing={spacing_m}"]
+    if block == "fixed":
+        keys = tomllib.loads((ROOT / "data" / "scenes" / f"{scene}.toml").read_text())["scene"]
+        W, H = keys["column_width"], keys["column_height"]
+        overrides += [f"scene.column_width={W - spacing_m!r}", f"scene.column_height={H - spacing_m!r}",
+                      f"deposit.toe_thickness={0.1 * H!r}"]
+    return overrides
+
+
 def resolution(args):
     out = pathlib.Path(args.out)
     spacings = [float(s) for s in args.spacings.split(",")]
-    specs = [(f"{scene}-{s:g}mm", scene, [f"scene.particle_spacing={s / 1000}"] + args.set,
-              {"model_label": label, "spacing_mm": s})
+    specs = [(f"{scene}-{s:g}mm", scene, block_overrides(scene, s / 1000, args.block) + args.set,
+              {"model_label": label, "spacing_mm": s, "block": args.block})
              for s in sorted(spacings) for label, scene in SCENES.items()]  # finest first: longest first
     rows = run_all(specs, out, args.jobs, args.reuse)
+    for r in rows:
+        if r["status"] == "ok":
+            r.update({f"{key[:-2]}_face_m": r[key] + r["particle_spacing"]
+                      for key in ("runout_m", "runout_thick_m", "height_m")})
     write_csv(rows, out / "resolution.csv")
-    header = " | ".join(f"{name} ({unit})" for _, name, _, unit in MEASURES)
-    lines = ["# Resolution study (soilsph collapse, shipped scenes, to rest or 1 s)", "",
+    measures = FACE_MEASURES if args.block == "fixed" else MEASURES
+    header = " | ".join(f"{name} ({unit})" for _, name, _, unit in measures)
+    title = ("one W x H block at every spacing, measured from the walls' faces" if args.block == "fixed"
+             else "shipped scenes")
+    lines = [f"# Resolution study (soilsph collapse, {title}, to rest or 1 s)", "",
              "Differences from the finest run in brackets (per cent; degrees for the angle).", "",
              f"| model | spacing (mm) | {header} | t end (s) | steps | wall (s) |",
-             "|---|---|" + "---|" * len(MEASURES) + "---|---|---|"]
+             "|---|---|" + "---|" * len(measures) + "---|---|---|"]
     for label in SCENES:
         model_rows = sorted((r for r in rows if r["model_label"] == label and r["status"] == "ok"),
                             key=lambda r: -r["spacing_mm"])
@@ -136,30 +168,30 @@ def resolution(args):
         finest = model_rows[-1]
         for r in model_rows:
             cells = []
-            for key, _, scale, unit in MEASURES:
+            for key, _, scale, unit in measures:
                 d = r[key] - finest[key] if unit == "deg" else 100 * (r[key] - finest[key]) / finest[key]
                 cells.append(f"{scale * r[key]:.2f} ({d:+.1f}{'°' if unit == 'deg' else ' %'})")
             lines.append(f"| {label} | {r['spacing_mm']:g} | " + " | ".join(cells) +
                          f" | {r['end_time']:.3f} | {r['steps']} | {r['wall_seconds']:.1f} |")
         if len(model_rows) >= 3:
             h = [r["spacing_mm"] for r in model_rows[-3:]]
-            for key, name, scale, unit in MEASURES:
+            for key, name, scale, unit in measures:
                 fit = richardson(h, [r[key] for r in model_rows[-3:]])
                 lines.append("" if fit is None else
                              f"| {label} | Richardson ({name}, last three) | order {fit[0]:.2f}, extrapolated "
-                             f"{scale * fit[1]:.2f} {unit} |" + " |" * (len(MEASURES) + 2))
+                             f"{scale * fit[1]:.2f} {unit} |" + " |" * (len(measures) + 2))
     lines = [line for line in lines if line]
     (out / "resolution.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
-    plot_resolution(rows, out / "resolution.png")
+    plot_resolution(rows, out / "resolution.png", measures)
 
 
-def plot_resolution(rows, path):
+def plot_resolution(rows, path, measures=MEASURES):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(MEASURES), figsize=(4.3 * len(MEASURES), 4))
-    for ax, (key, name, scale, unit) in zip(axes, MEASURES):
+    fig, axes = plt.subplots(1, len(measures), figsize=(4.3 * len(measures), 4))
+    for ax, (key, name, scale, unit) in zip(axes, measures):
         for label, marker in zip(SCENES, "os"):
             model_rows = sorted((r for r in rows if r["model_label"] == label and r["status"] == "ok"),
                                 key=lambda r: -r["spacing_mm"])
@@ -411,6 +443,8 @@ def main():
         p.add_argument("--reuse", action="store_true", help="keep runs whose folder has a summary.json")
         if name == "resolution":
             p.add_argument("--spacings", default="4,2,1,0.5", help="particle spacings in mm")
+            p.add_argument("--block", choices=("paper", "fixed"), default="paper",
+                           help="paper: the scenes' column keys; fixed: one W x H block at every spacing")
         elif name == "cut":
             p.add_argument("--spacings", default="2,1", help="particle spacings in mm")
             p.add_argument("--heights", default="3,4,5,5.4,5.6,5.8,6,8", help="cut heights in cm")
