@@ -271,9 +271,9 @@ class CamClayReturn {
   /// The stress-kept start goes first where z > 2 (for the default α = ½ the z at which the midpoint's
   /// shear amplification 1 − z/2 turns negative and the stiffness cap below takes over; thresholds from
   /// 1 to 10 cost the same), the other one when the first fails. In the SPH collapse (MCC, 1 mm) the
-  /// first start then converges for all but ~100 of 8.4e6 returns; with the flow start alone 4.7 %
-  /// failed, and the safeguarded solver that took them over made 40 % of all evaluations of the
-  /// return's equations (docs/integrators.md).
+  /// first start then converges for all but ~100 of 8.4e6 returns and the second for those; with the
+  /// flow start alone 4.7 % failed, and the safeguarded solver that took them over made about 35 % of
+  /// all evaluations of the return's equations (docs/integrators.md).
   std::optional<Point> solve_jointly(double l) const {
     const EntryEstimate first_order = entry_estimate();
     const double l1 = first_order.multiplier;
@@ -473,12 +473,14 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Cam
   auto x = trial;
   const std::optional<CamClayReturn::Point> fast = eqs.solve_jointly(l);
   bool converged = fast.has_value();
-  if (fast) x = *fast;
-  // The fallback starts from the larger of the trial's estimate and the entry's (the fast path's
-  // start), which for a dust return far outside its surface is orders of magnitude closer: 7× fewer
-  // outer steps over a collapse, with the same root on every return (docs/integrators.md).
-  else
+  if (fast) {
+    x = *fast;
+  } else {
+    // The fallback starts from the larger of the trial's estimate and the entry's (the fast path's
+    // start), which for a dust return far outside its surface is orders of magnitude closer: 7× fewer
+    // outer steps over a collapse, with the same root on every return (docs/integrators.md).
     l = std::max(l, eqs.entry_estimate().multiplier);
+  }
   double last_step = std::numeric_limits<double>::infinity(), step_before_last = last_step;
   for (int it = 0; !converged && it < kMaxIterations; ++it) {
     x = eqs.solve_volume(l, x.v);

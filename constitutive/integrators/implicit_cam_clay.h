@@ -26,8 +26,9 @@
 /// unknowns together (one evaluation per iteration instead of an inner solve per outer one) is tried
 /// from the first-order estimate at the entry or, for an increment whose plastic shear dwarfs the
 /// elastic one (a dust particle at the free surface), from the stress kept at the entry, and kept
-/// when it converges inside v's bracket; in the SPH collapse it does for all but ~1e-5 of the
-/// returns, and the update costs 1.4–1.9× less (docs/integrators.md).
+/// when it converges inside v's bracket; in the SPH collapse one of the two starts does for every
+/// return (the first for all but ~1e-5 of them), and the update costs 1.4–1.9× less
+/// (docs/integrators.md).
 /// Non-convergence throws IntegrationError.
 /// The consistent tangent follows from the implicit-function theorem on (r1, f), including how the
 /// entry σ_t moves with Δε: see docs/integrators.md.
