@@ -1,10 +1,14 @@
 // Cost of one material-point update, per model × integrator, for an elastic and a plastic step.
 // Every iteration applies the same increment to the same state, so the plastic cases stay plastic.
 // Increments of 1e-4 (the upper middle of what an SPH step produces, 1e-6 to 1e-3); the plastic step
-// also at 1e-6 and 1e-3 (labels plastic-1e-6, plastic-1e-3).
+// also at 1e-6 and 1e-3 (labels plastic-1e-6, plastic-1e-3). For MCC also `dust`: a free-surface
+// particle of the SPH collapse, p_c = 0.025 Pa on the wet side (p = 0.6 p_c), under one step's shear
+// and extension, a trial ~1e4 times the surface's size outside it (z = 6GΔλ > 1e3).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "constitutive/stress_test.h"
 
@@ -39,6 +43,19 @@ std::pair<Case, Case> cases(const Model& model) {
   }
 }
 
+/// A dust particle (see the file's comment), as in tests/constitutive/test_integrators.cpp.
+template <class Model>
+Case dust(const Model& model) {
+  const double pc = 0.025, p = 0.6 * pc, M = model.M();
+  State s;
+  s.stress = isotropic_stress(p);
+  s.stress(0, 1) = s.stress(1, 0) = std::sqrt(M * M * p * (pc - p)) / std::sqrt(3.0);  // q on the surface
+  s.pc = pc;
+  Mat3 d_eps = Vec3(1e-4, -0.8e-4, 0.0).asDiagonal();
+  d_eps(0, 1) = d_eps(1, 0) = 0.6e-4;
+  return {s, d_eps};
+}
+
 template <class Model>
 void register_model(const std::string& name, const Model& base) {
   for (Integrator scheme : kIntegrators) {
@@ -49,9 +66,10 @@ void register_model(const std::string& name, const Model& base) {
     // The plastic step also at the ends of the SPH range of strain increments, 1e-6 and 1e-3.
     const Case plastic_small{plastic.start, 1e-2 * plastic.increment};
     const Case plastic_large{plastic.start, 10.0 * plastic.increment};
-    for (const auto& [kind, c] :
-         {std::pair{"elastic", elastic}, std::pair{"plastic", plastic},
-          std::pair{"plastic-1e-6", plastic_small}, std::pair{"plastic-1e-3", plastic_large}}) {
+    std::vector<std::pair<std::string, Case>> kinds = {
+        {"elastic", elastic}, {"plastic", plastic}, {"plastic-1e-6", plastic_small}, {"plastic-1e-3", plastic_large}};
+    if constexpr (Model::kHasPreconsolidation) kinds.emplace_back("dust", dust(model));
+    for (const auto& [kind, c] : kinds) {
       const std::string label = name + "/" + std::string(integrator_name(scheme)) + "/" + kind;
       benchmark::RegisterBenchmark(label.c_str(), [model, c = c](benchmark::State& st) {
         State start = c.start;
