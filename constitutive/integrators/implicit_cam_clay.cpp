@@ -446,6 +446,14 @@ class CamClayReturn {
   }
   double M2() const { return M2_; }
   const YieldEntry& entry() const { return entry_; }
+  /// dε^p:dε^p of the flow integral w_t n_g(σ_t) + w_e n_g(σ_{n+1}), n_g = −M²(2p − p_c)/3 I + 3s:
+  /// its trace is −M² (volumetric flow) and its deviator 3(w_t s_t + w_e s), s = a/B, so
+  /// dε^p:dε^p = (M² flow)²/3 + 9(w_t² s_t:s_t + 2 w_t w_e a:s_t/B + w_e² a:a/B²).
+  double plastic_strain_squared_norm(const Point& x) const {
+    const double volume = M2_ * volumetric_flow(x), wt = x.wt, we = x.we();
+    return volume * volume / 3.0 +
+           9.0 * (wt * wt * T2_ + 2.0 * wt * we * x.a_st / x.B + we * we * x.A2 / (x.B * x.B));
+  }
 
  private:
   const ModifiedCamClay& model_;
@@ -510,9 +518,7 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Cam
   State next = start;
   next.stress = eqs.stress(x);
   next.pc = x.pc;
-  const Mat3 entry_stress = entry.s - entry.p * identity3();
-  accumulate_plastic_strain(next, x.wt * model.flow_direction(entry_stress, start.pc) +
-                                      x.we() * model.flow_direction(next.stress, next.pc));
+  accumulate_plastic_strain_from_squared_norm(next, eqs.plastic_strain_squared_norm(x));
   next.plastic_multiplier = x.l;
   if (tangent) *tangent = eqs.tangent(x, true);
   if (local_error) {

@@ -30,7 +30,8 @@ State implicit_update(const DruckerPrager& model, const State& start, const Mat3
   const double sqrt_j2_next = model.k_c() - alpha * I1_next;
   if (sqrt_j2_next > 0.0) {  // return to the cone
     next.stress = sqrt_j2_next / sqrt_j2 * s_trial + I1_next / 3.0 * Mat3::Identity();
-    accumulate_plastic_strain(next, d_lambda * (s_trial / (2.0 * sqrt_j2) + alpha_psi * Mat3::Identity()));
+    // dε^p = Δλ (s_tr/(2√J2_tr) + α_ψ I), whose parts are orthogonal: dε^p:dε^p = Δλ² (½ + 3α_ψ²).
+    accumulate_plastic_strain_from_squared_norm(next, d_lambda * d_lambda * (0.5 + 3.0 * alpha_psi * alpha_psi));
     next.plastic_multiplier = d_lambda;
     if (tangent) {
       // σ = σ_tr − Δλ(√2 G n + 3K α_ψ I), n = s_tr/‖s_tr‖, ‖s_tr‖ = √2 √J2_tr:

@@ -180,6 +180,47 @@ TEST_CASE("implicit MCC keeps the physical root of a dust particle's compressive
   CHECK(std::abs(mcc.normalized_yield(next.stress, next.pc)) <= 1e-9);
 }
 
+TEST_CASE("implicit returns accumulate the plastic strain that the elastic law leaves", "[integrators]") {
+  // With constant elasticity the plastic part of an increment is Δε − C:Δσ whatever the return did,
+  // so the accumulated measure must grow by sqrt(2/3 ‖Δε − C:Δσ‖²); the returns compute it in
+  // closed form from their own flow (D-P cone, MCC wet, dry and dust returns).
+  auto check = [](const auto& model, const State& s, const Mat3& d_eps) {
+    const State next = model.update(s, d_eps, Mat3::Zero());
+    REQUIRE(next.plastic_multiplier > 0.0);
+    const Mat3 plastic = d_eps - model.elasticity().at(0.0).compliance(next.stress - s.stress);
+    CHECK(next.plastic_shear_strain - s.plastic_shear_strain ==
+          Approx(std::sqrt(2.0 / 3.0 * ddot(plastic, plastic))).epsilon(1e-8));
+  };
+  for (double psi : {0.0, 10.0}) {
+    const DruckerPrager dp(with(test::table1_drucker_prager_params(2e3, psi), Integrator::Implicit));
+    State s;
+    s.stress = isotropic_stress(20e3);
+    s.plastic_shear_strain = 0.01;
+    Mat3 shear = diagonal(-6e-2, 3e-2, 1.5e-2);
+    shear(0, 1) = shear(1, 0) = 3e-3;
+    check(dp, s, shear);
+  }
+  const ModifiedCamClay mcc(with(test::table1_cam_clay_params(Elasticity::Kind::Constant), Integrator::Implicit));
+  State nc;
+  nc.stress = isotropic_stress(100e3);
+  nc.pc = 100e3;
+  check(mcc, nc, diagonal(-1e-2, 0.2e-2, 0.2e-2));  // wet side: the entry at the start
+  State inside = nc;
+  inside.stress = isotropic_stress(90e3);
+  check(mcc, inside, diagonal(-3e-2, 0.6e-2, 0.6e-2));  // an elastic part first (entry t > 0)
+  State oc = nc;
+  oc.stress = isotropic_stress(30e3);
+  check(mcc, oc, diagonal(-8e-2, 4e-2, 4e-2));  // dry side
+  State dust;
+  const double pc = 0.025, p = 0.6 * pc;
+  dust.stress = isotropic_stress(p);
+  dust.stress(0, 1) = dust.stress(1, 0) = std::sqrt(mcc.M() * mcc.M() * p * (pc - p)) / std::sqrt(3.0);
+  dust.pc = pc;
+  Mat3 step = diagonal(1e-4, -0.8e-4, 0.0);
+  step(0, 1) = step(1, 0) = 0.6e-4;
+  check(mcc, dust, step);  // the stress-kept start
+}
+
 TEST_CASE("the same increment applied to the same state gives the same stress bit for bit", "[integrators]") {
   std::mt19937_64 rng(7);
   for (Integrator scheme : kIntegrators) {
