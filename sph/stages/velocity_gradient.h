@@ -40,8 +40,6 @@ struct VelocityGradient {
     s << 0.0, w, 0.0, -w, 0.0, 0.0, 0.0, 0.0, 0.0;
     return s;
   }
-  Mat3 strain_rate() const { return strain_increment(1.0); }
-  Mat3 spin_rate() const { return spin_increment(1.0); }
 };
 
 /// Eq 23 at soil particle i and, in the same pass over its pairs, the continuity equation's

@@ -57,12 +57,15 @@ TEST_CASE("eq 23 gives the linear field's gradient times the lattice moment in t
     CHECK(p.lyy[i] == Approx(A[1][1] * m).epsilon(1e-10));
   }
   CHECK(interior == 49);
-  // Strain and spin rates split the gradient: ε̇_xy = ½(A_xy + A_yx), ω̇_xy = ½(A_xy − A_yx).
+  // Strain and spin increments over dt split the gradient: Δε_xy = ½(A_xy + A_yx) dt,
+  // Δω_xy = ½(A_xy − A_yx) dt.
   const std::size_t centre = 7 * 15 + 7;
-  CHECK(stored_velocity_gradient(p, centre).strain_rate()(0, 1) == Approx(0.5 * (A[0][1] + A[1][0]) * m));
-  CHECK(stored_velocity_gradient(p, centre).spin_rate()(0, 1) == Approx(0.5 * (A[0][1] - A[1][0]) * m));
-  CHECK(stored_velocity_gradient(p, centre).spin_rate()(1, 0) == Approx(-0.5 * (A[0][1] - A[1][0]) * m));
-  CHECK(stored_velocity_gradient(p, centre).strain_rate()(2, 2) == 0.0);
+  const double dt = 2e-3;
+  const VelocityGradient L = stored_velocity_gradient(p, centre);
+  CHECK(L.strain_increment(dt)(0, 1) == Approx(0.5 * (A[0][1] + A[1][0]) * m * dt));
+  CHECK(L.spin_increment(dt)(0, 1) == Approx(0.5 * (A[0][1] - A[1][0]) * m * dt));
+  CHECK(L.spin_increment(dt)(1, 0) == Approx(-0.5 * (A[0][1] - A[1][0]) * m * dt));
+  CHECK(L.strain_increment(dt)(2, 2) == 0.0);
 }
 
 TEST_CASE("the corrected gradient is exact for a linear field everywhere, edges included",
