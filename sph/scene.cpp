@@ -241,7 +241,10 @@ Numerics read_numerics(const TableReader& t) {
   n.viscosity_beta = t.number_or("artificial_viscosity_beta", 0.1, Range::non_negative());
   n.artificial_stress = t.boolean_or("artificial_stress", true);
   n.artificial_stress_epsilon = t.number_or("artificial_stress_epsilon", 0.5, Range::closed(0.0, 1.0));
-  n.artificial_stress_exponent = t.number_or("artificial_stress_exponent", 2.55, Range::positive());
+  // n ≥ 1 keeps f^n differentiable at f = 0, which its table needs (stages/kernel_ratio_power.h);
+  // the literature uses 2.55 (Bui et al. 2008) to 4 (Gray et al. 2001); 10 bounds the table's error.
+  n.artificial_stress_exponent =
+      t.number_or("artificial_stress_exponent", 2.55, Range::closed(1.0, 10.0));
   n.cfl = t.number_or("cfl", 0.5, Range::open_closed(0.0, 2.0));  // measured limit and margin: docs/sph.md
   n.velocity_gradient_correction = t.boolean_or("velocity_gradient_correction", false);
   return n;

@@ -91,8 +91,9 @@ SolverSetup make_solver_setup(const Scene& scene) {
   momentum.sound_speed = c;
   momentum.smoothing_length = kernel.smoothing_length();
   momentum.gravity = g.gravity;
-  momentum.artificial_stress = {scene.numerics.artificial_stress, scene.numerics.artificial_stress_epsilon,
-                                scene.numerics.artificial_stress_exponent, kernel.value(g.particle_spacing)};
+  if (scene.numerics.artificial_stress)
+    momentum.artificial_stress = {scene.numerics.artificial_stress_epsilon,
+                                  scene.numerics.artificial_stress_exponent, kernel, g.particle_spacing};
   return {kernel,
           scene.numerics.cfl,
           c,

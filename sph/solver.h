@@ -247,7 +247,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
       nl.fill_row(i, p.x, p.y, setup.kernel);
       if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i);
       work.volume[i] = particle_volume(p, i);
-      if (m.artificial_stress.enabled) set_artificial_stress(p, i, m.artificial_stress.epsilon);
+      if (m.artificial_stress.enabled()) set_artificial_stress(p, i, m.artificial_stress.epsilon());
       set_momentum_source(p, i);
     };
     balanced(work.prepare_balance, 0, p.soil_count, prepare);

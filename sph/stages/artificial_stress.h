@@ -9,16 +9,31 @@
 /// Cohesionless soil carries almost no tension (the D-P apex is I1 = 0), so the term only acts on
 /// transient tension; it is switchable ([numerics] artificial_stress).
 #include <cmath>
+#include <optional>
+#include <utility>
 
+#include "sph/kernel.h"
 #include "sph/particles.h"
+#include "sph/stages/kernel_ratio_power.h"
 
 namespace soilsph::sph {
 
-struct ArtificialStress {
-  bool enabled = true;
-  double epsilon = 0.5;       ///< ε
-  double exponent = 2.55;     ///< n
-  double w_at_spacing = 1.0;  ///< W(Δp)
+/// The term's parameters, off unless built with them (scene key [numerics] artificial_stress).
+class ArtificialStress {
+ public:
+  ArtificialStress() = default;
+  /// ε, n, and the kernel and Δp that f = W / W(Δp) is taken of.
+  ArtificialStress(double epsilon, double exponent, const CubicSpline& kernel, double particle_spacing)
+      : epsilon_(epsilon), f_power_(std::in_place, exponent, kernel.value(particle_spacing), kernel.value(0.0)) {}
+
+  bool enabled() const { return f_power_.has_value(); }
+  double epsilon() const { return epsilon_; }  ///< ε
+  /// f^n of a pair with W_ij = w; only when enabled.
+  double weight(double w) const { return (*f_power_)(w); }
+
+ private:
+  double epsilon_ = 0.0;
+  std::optional<KernelRatioPower> f_power_;
 };
 
 /// R of particle i (already divided by ρ²) into p.rxx, p.ryy, p.rxy. A particle without a tensile

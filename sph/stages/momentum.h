@@ -21,7 +21,7 @@ struct MomentumParams {
   double sound_speed = 0.0;       ///< c (m/s), the elastic P-wave speed (time_step.h)
   double smoothing_length = 0.0;  ///< h (m)
   Vec2 gravity{0.0, -9.81};       ///< m/s²
-  ArtificialStress artificial_stress;
+  ArtificialStress artificial_stress;  ///< off unless built with its parameters
 };
 
 struct Acceleration {
@@ -41,7 +41,7 @@ inline void set_momentum_source(Particles& p, std::size_t i) {
 /// q (m/s²), from the momentum sources (set_momentum_source) and the artificial stress. One
 /// definition for the step's sum (acceleration_of) and for the force each wall's ghosts exert
 /// (analysis/boundary_forces.h). In two parts: the stress and viscosity terms, without a branch so
-/// that the sum over a row vectorises, and the artificial stress, which needs `pow` and acts only
+/// that the sum over a row vectorises, and the artificial stress, which needs f^n and acts only
 /// where i or j is in tension (a few pairs), summed apart.
 class PairAcceleration {
  public:
@@ -52,9 +52,8 @@ class PairAcceleration {
         eta2_(0.01 * h_ * h_),
         alpha_c_(m.viscosity_alpha * m.sound_speed),
         beta_(m.viscosity_beta),
-        art_(m.artificial_stress.enabled),
-        inv_w_dp_(1.0 / m.artificial_stress.w_at_spacing),
-        n_exp_(m.artificial_stress.exponent),
+        art_(m.artificial_stress.enabled()),
+        artificial_stress_(m.artificial_stress),
         source_(p.momentum_source.data()),
         self_(p.momentum_source[i]) {}
 
@@ -82,7 +81,7 @@ class PairAcceleration {
   /// The artificial-stress term (R_i + R_j) f_ij^n of the pair with j, W_ij = w.
   Acceleration artificial_stress(std::size_t j, double w, double gx, double gy) const {
     const Particles& p = p_;
-    const double f = std::pow(w * inv_w_dp_, n_exp_);
+    const double f = artificial_stress_.weight(w);
     const double txx = f * (p.rxx[i_] + p.rxx[j]), tyy = f * (p.ryy[i_] + p.ryy[j]);
     const double txy = f * (p.rxy[i_] + p.rxy[j]);
     const double mass = source_[j].mass;
@@ -105,7 +104,7 @@ class PairAcceleration {
   std::size_t i_;
   double h_, eta2_, alpha_c_, beta_;
   bool art_;
-  double inv_w_dp_, n_exp_;
+  const ArtificialStress& artificial_stress_;
   const MomentumSource* source_;
   MomentumSource self_;
 };

@@ -33,6 +33,8 @@ TEST_CASE("overrides (--set) reach any key and unknown keys are errors", "[scene
                     Contains("[scene] particle_spacin") && Contains("is not a known key"));
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"numerics.cfl=2.5"}),
                     Contains("[numerics] cfl = 2.5 is out of range"));
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"numerics.artificial_stress_exponent=0.5"}),
+                    Contains("[numerics] artificial_stress_exponent = 0.5 is out of range"));
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"scene.wall_withdrawal=\"slow\""}),
                     Contains("wall_withdrawal") && Contains("\"instant\", \"none\""));
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {"solver.steps=3"}),

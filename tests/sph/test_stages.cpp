@@ -8,6 +8,7 @@
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/stages/artificial_stress.h"
 #include "sph/stages/continuity.h"
+#include "sph/stages/kernel_ratio_power.h"
 #include "sph/stages/momentum.h"
 #include "sph/stages/stress_update.h"
 #include "sph/stages/velocity_gradient.h"
@@ -65,7 +66,6 @@ TEST_CASE("eq 12: a stress gradient accelerates by dsigma/dx / rho, a uniform st
   params.sound_speed = 26.0;
   params.smoothing_length = W.smoothing_length();
   params.gravity = {0.0, -9.81};
-  params.artificial_stress.enabled = false;
   compute_acceleration(p, nl, params);
   const double m = lattice_moment(W);
   for (std::size_t i = 0; i < p.soil_count; ++i) {
@@ -88,7 +88,6 @@ TEST_CASE("eq 37: the viscosity pushes approaching particles apart and leaves re
     MomentumParams params;
     params.viscosity_alpha = 1.0, params.viscosity_beta = 1.0, params.sound_speed = 26.0;
     params.smoothing_length = W.smoothing_length(), params.gravity = {0.0, 0.0};
-    params.artificial_stress.enabled = false;
     compute_acceleration(p, nl, params);
     if (v > 0) {
       // φ = h v·r/(r² + 0.01h²) with v·r = −v Δp; Π = (−α c φ + β φ²)/ρ; a0 = −m Π ∂W/∂x_0.
@@ -245,7 +244,7 @@ TEST_CASE("eq 12 with the artificial stress: (1 - eps) T / rho^2 on a pair with 
       nl.build(p.x, p.y, W);
       MomentumParams params;
       params.sound_speed = 26.0, params.smoothing_length = W.smoothing_length(), params.gravity = {0.0, 0.0};
-      params.artificial_stress = {enabled, eps, 2.55, W.value(kDx)};
+      params.artificial_stress = enabled ? ArtificialStress(eps, 2.55, W, kDx) : ArtificialStress{};
       compute_artificial_stress(p, eps);
       compute_acceleration(p, nl, params);
       const double factor = enabled ? 1.0 - eps : 1.0;
@@ -253,5 +252,29 @@ TEST_CASE("eq 12 with the artificial stress: (1 - eps) T / rho^2 on a pair with 
       CHECK(p.ax[0] == Approx(p.mass[1] * factor * T / (kRho * kRho) * grad).epsilon(1e-12));
       CHECK(p.ax[1] == Approx(-p.ax[0]).epsilon(1e-12));
       CHECK(p.ay[0] == 0.0);
+    }
+}
+
+TEST_CASE("the artificial stress's weight f^n from its table is within the Hermite bound of pow", "[stages]") {
+  // Cubic Hermite on 1024 intervals of W in [0, W(0)]: on [f_k, f_k+1] the error is at most
+  // Δ⁴/384 max|d⁴(f^n)/df⁴| (kernel_ratio_power.h); the first interval, where f^n is not four times
+  // differentiable for n < 4, only within 1e-8. Linear interpolation, or a slope not scaled by the
+  // step, fails the bound by orders of magnitude.
+  constexpr std::size_t kIntervals = 1024;
+  for (const double ratio : {1.0, 1.3, 2.0})
+    for (const double n : {1.0, 2.55, 4.0, 5.5}) {
+      const CubicSpline W(ratio * kDx);
+      const double w_dp = W.value(kDx), step = W.value(0.0) / kIntervals / w_dp;  // Δ in f
+      const KernelRatioPower weight(n, w_dp, W.value(0.0), kIntervals);
+      CAPTURE(ratio, n);
+      for (int k = 0; k <= 20000; ++k) {
+        const double w = W.value(2.0 * W.smoothing_length() * k / 20000.0), f = w / w_dp;
+        const double exact = std::pow(f, n), error = std::abs(weight(w) - exact);
+        const double lo = std::floor(f / step) * step, hi = lo + step;
+        const double d4 = std::abs(n * (n - 1.0) * (n - 2.0) * (n - 3.0)) *
+                          std::max(std::pow(lo, n - 4.0), std::pow(hi, n - 4.0));
+        const double bound = lo > 0.0 ? std::pow(step, 4) / 384.0 * d4 : 1e-8;
+        CHECK(error <= bound + 1e-14 * std::max(1.0, exact));  // + rounding
+      }
     }
 }

@@ -17,7 +17,7 @@ struct FreeFall {
                     25.0,
                     1.0,
                     1.0,
-                    MomentumParams{},
+                    MomentumParams{},  // the artificial stress off
                     WallGuard{},
                     WallMotions{},
                     0.0,
@@ -30,7 +30,6 @@ struct FreeFall {
   FreeFall() {
     setup.momentum.gravity = {0.0, -9.81};
     setup.momentum.smoothing_length = 1.3e-3;
-    setup.momentum.artificial_stress.enabled = false;
     p.y[0] = 1.0;
   }
 };
