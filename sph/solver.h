@@ -20,6 +20,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -102,6 +103,7 @@ struct Workspace {
   NeighbourList neighbours;
   std::vector<double> vx_next, vy_next, density_next;  ///< v^{n+½}, ρ^{n+1} while a step computes them
   std::vector<double> volume;  ///< m/ρ^n of every particle, for eq 23 (one division per particle, not per pair)
+  std::atomic<bool> any_tension{false};  ///< a particle carries artificial stress this step (loop 1 → 2)
   double previous_dt = 0.0;  ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
   double time = 0.0;         ///< t^n (s), for the walls' motion
   double sound_speed = 0.0;  ///< current c (m/s)
@@ -247,7 +249,8 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
       nl.fill_row(i, p.x, p.y, setup.kernel);
       if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i);
       work.volume[i] = particle_volume(p, i);
-      if (m.artificial_stress.enabled()) set_artificial_stress(p, i, m.artificial_stress.epsilon());
+      if (m.artificial_stress.enabled() && set_artificial_stress(p, i, m.artificial_stress.epsilon()))
+        work.any_tension.store(true, std::memory_order_relaxed);
       set_momentum_source(p, i);
     };
     balanced(work.prepare_balance, 0, p.soil_count, prepare);
@@ -255,8 +258,9 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
     for (std::ptrdiff_t s = soil; s < all; ++s) prepare(static_cast<std::size_t>(s));
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
     //    Each particle's own ρ and σ, whatever its material: no interface model (docs/scenes.md).
+    const bool any_tension = work.any_tension.load(std::memory_order_relaxed);  // after loop 1's barrier
     balanced(work.momentum_balance, 0, p.soil_count, [&](std::size_t i) {
-      const Acceleration a = acceleration_of(p, nl, m, i);
+      const Acceleration a = acceleration_of(p, nl, m, i, any_tension);
       p.ax[i] = a.x, p.ay[i] = a.y;
       work.vx_next[i] = p.vx[i] + kick_dt * a.x;
       work.vy_next[i] = p.vy[i] + kick_dt * a.y;
@@ -295,6 +299,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
 #pragma omp single
   {
     if (!work.failed()) detail::close_step(groups, setup, p, work, dt);
+    work.any_tension.store(false, std::memory_order_relaxed);  // loop 2 has read it
     work.rebalance();
     on_closed();
   }

@@ -38,13 +38,14 @@ class ArtificialStress {
 
 /// R of particle i (already divided by ρ²) into p.rxx, p.ryy, p.rxy. A particle without a tensile
 /// principal stress, σ_max = (σxx + σyy)/2 + √(((σxx − σyy)/2)² + σxy²) ≤ 0 (most of a soil mass),
-/// gets R = 0 without the principal-axes rotation.
-inline void set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
+/// gets R = 0 without the principal-axes rotation. Returns whether R ≠ 0.
+inline bool set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
   const double sxx = p.sxx[i], syy = p.syy[i], sxy = p.sxy[i];
   const double centre = 0.5 * (sxx + syy), half_difference = 0.5 * (sxx - syy);
-  if (centre + std::sqrt(half_difference * half_difference + sxy * sxy) <= 0.0) {
+  // σ_max ≤ 0 without the square root: centre ≤ 0 and radius² ≤ centre².
+  if (centre <= 0.0 && half_difference * half_difference + sxy * sxy <= centre * centre) {
     p.rxx[i] = p.ryy[i] = p.rxy[i] = 0.0;
-    return;
+    return false;
   }
   // Principal axes: tan 2θ = 2σxy / (σxx − σyy).
   const double theta = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
@@ -57,13 +58,12 @@ inline void set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
   p.rxx[i] = c * c * r1 + sn * sn * r2;
   p.ryy[i] = sn * sn * r1 + c * c * r2;
   p.rxy[i] = c * sn * (r1 - r2);
+  return p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
 }
 
-/// Fills p.rxx, p.ryy, p.rxy for every particle, soil and boundary (orphaned OpenMP loop).
+/// Fills p.rxx, p.ryy, p.rxy for every particle, soil and boundary (one thread).
 inline void compute_artificial_stress(Particles& p, double epsilon) {
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp for schedule(static)
-  for (std::ptrdiff_t s = 0; s < n; ++s) set_artificial_stress(p, static_cast<std::size_t>(s), epsilon);
+  for (std::size_t i = 0; i < p.size(); ++i) set_artificial_stress(p, i, epsilon);
 }
 
 }  // namespace soilsph::sph

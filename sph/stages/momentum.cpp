@@ -3,7 +3,7 @@
 namespace soilsph::sph {
 
 Acceleration acceleration_of(const Particles& p, const NeighbourList& nl, const MomentumParams& m,
-                            std::size_t i) {
+                            std::size_t i, bool any_tension) {
   const PairAcceleration term(p, m, i);
   const NeighbourList::Row row = nl.row(i);
   double ax = 0.0, ay = 0.0;
@@ -14,7 +14,7 @@ Acceleration acceleration_of(const Particles& p, const NeighbourList& nl, const 
     ax += a.x;
     ay += a.y;
   }
-  if (term.artificial_stress_enabled())
+  if (any_tension && term.artificial_stress_enabled())
     for (std::size_t k = 0; k < row.size; ++k) {
       const auto j = static_cast<std::size_t>(row.j[k]);
       if (!term.has_artificial_stress(j)) continue;

@@ -111,20 +111,22 @@ class PairAcceleration {
 
 /// a_i of soil particle i: the pair terms of every neighbour (soil and ghost) and gravity. The stress
 /// and viscosity terms in one loop vectorised across the row's pairs, then the few artificial-stress
-/// terms. Out of line (stages/momentum.cpp), so that the loop is compiled on its own whatever the
-/// caller inlines (GCC 12 -fopt-info-vec: vectorised with SSE2 and AVX2 alike).
+/// terms, unless no particle is in tension this step (`any_tension` false: D-P soil never is, and the
+/// scan of every pair for a tensile neighbour was 3 % of its step). Out of line
+/// (stages/momentum.cpp), so that the loop is compiled on its own whatever the caller inlines (GCC 12
+/// -fopt-info-vec: vectorised with SSE2 and AVX2 alike).
 [[gnu::noinline]] Acceleration acceleration_of(const Particles& p, const NeighbourList& nl,
-                                                const MomentumParams& m, std::size_t i);
+                                                const MomentumParams& m, std::size_t i, bool any_tension);
 
-/// Fills p.ax, p.ay for every soil particle (orphaned OpenMP loops).
+/// Fills p.ax, p.ay for every soil particle (one thread), after the artificial stress.
 inline void compute_acceleration(Particles& p, const NeighbourList& nl, const MomentumParams& m) {
-  const auto all = static_cast<std::ptrdiff_t>(p.size()), n = static_cast<std::ptrdiff_t>(p.soil_count);
-#pragma omp for schedule(static)
-  for (std::ptrdiff_t s = 0; s < all; ++s) set_momentum_source(p, static_cast<std::size_t>(s));
-#pragma omp for schedule(static)
-  for (std::ptrdiff_t s = 0; s < n; ++s) {
-    const auto i = static_cast<std::size_t>(s);
-    const Acceleration a = acceleration_of(p, nl, m, i);
+  bool any_tension = false;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    set_momentum_source(p, i);
+    any_tension = any_tension || p.momentum_source[i].tension;
+  }
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    const Acceleration a = acceleration_of(p, nl, m, i, any_tension);
     p.ax[i] = a.x;
     p.ay[i] = a.y;
   }
