@@ -24,7 +24,8 @@ class ArtificialStress {
   ArtificialStress() = default;
   /// ε, n, and the kernel and Δp that f = W / W(Δp) is taken of.
   ArtificialStress(double epsilon, double exponent, const CubicSpline& kernel, double particle_spacing)
-      : epsilon_(epsilon), f_power_(std::in_place, exponent, kernel.value(particle_spacing), kernel.value(0.0)) {}
+      : epsilon_(epsilon),
+        f_power_(std::in_place, exponent, kernel.value(particle_spacing), kernel.value(0.0)) {}
 
   bool enabled() const { return f_power_.has_value(); }
   double epsilon() const { return epsilon_; }  ///< ε

@@ -111,8 +111,8 @@ class PairAcceleration {
 
 /// a_i of soil particle i: the pair terms of every neighbour (soil and ghost) and gravity. The stress
 /// and viscosity terms in one loop vectorised across the row's pairs, then the few artificial-stress
-/// terms, unless no particle is in tension this step (`any_tension` false: D-P soil never is, and the
-/// scan of every pair for a tensile neighbour was 3 % of its step). Out of line
+/// terms, unless no particle is in tension this step (`any_tension` false: none ever is in the shipped
+/// D-P scenes, where the scan of every pair for a tensile neighbour was 3 % of the step). Out of line
 /// (stages/momentum.cpp), so that the loop is compiled on its own whatever the caller inlines (GCC 12
 /// -fopt-info-vec: vectorised with SSE2 and AVX2 alike).
 [[gnu::noinline]] Acceleration acceleration_of(const Particles& p, const NeighbourList& nl,
