@@ -37,6 +37,12 @@ class ArtificialStress {
   std::optional<KernelRatioPower> f_power_;
 };
 
+/// Whether particle i has a nonzero R: its principal parts are both ≤ 0, so R ≠ 0 exactly when R_xx or
+/// R_yy is.
+inline bool carries_artificial_stress(const Particles& p, std::size_t i) {
+  return p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
+}
+
 /// R of particle i (already divided by ρ²) into p.rxx, p.ryy, p.rxy. A particle without a tensile
 /// principal stress, σ_max = (σxx + σyy)/2 + √(((σxx − σyy)/2)² + σxy²) ≤ 0 (most of a soil mass),
 /// gets R = 0 without the principal-axes rotation. Returns whether R ≠ 0.
@@ -59,7 +65,7 @@ inline bool set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
   p.rxx[i] = c * c * r1 + sn * sn * r2;
   p.ryy[i] = sn * sn * r1 + c * c * r2;
   p.rxy[i] = c * sn * (r1 - r2);
-  return p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
+  return carries_artificial_stress(p, i);
 }
 
 /// Fills p.rxx, p.ryy, p.rxy for every particle, soil and boundary (one thread).

@@ -34,7 +34,7 @@ struct Acceleration {
 inline void set_momentum_source(Particles& p, std::size_t i) {
   const double inv_rho2 = 1.0 / (p.density[i] * p.density[i]);
   p.momentum_source[i] = {p.sxx[i] * inv_rho2, p.syy[i] * inv_rho2, p.sxy[i] * inv_rho2, p.vx[i], p.vy[i],
-                          p.density[i],        p.mass[i],           p.rxx[i] != 0.0 || p.ryy[i] != 0.0};
+                          p.density[i],        p.mass[i],           carries_artificial_stress(p, i)};
 }
 
 /// The pair terms of eq 12 for one particle i: what neighbour j contributes to a_i through the pair
