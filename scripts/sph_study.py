@@ -3,7 +3,8 @@
 `soilsph collapse` runs whose summary.json files are gathered into one CSV and one figure.
 Run with Debian's /usr/bin/python3 (matplotlib, numpy).
 
-    scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--block paper|fixed] [--jobs 2] [--reuse]
+    scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--block paper|fixed]
+                                    [--smoothing-length MM] [--jobs 2] [--reuse]
     scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2] [--integrators shipped,implicit]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
     scripts/sph_study.py cut        [--out DIR] [--heights 3,4,...] [--spacings 2,1]
@@ -22,6 +23,10 @@ resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes. Writes DIR/resol
   column_width W - dp, column_height H - dp and toe_thickness H/10, and the table reports the
   measures from the walls' faces to the cells' edges (runout, H/10 runout and height + dp; the
   CSV adds them as runout_face_m, runout_thick_face_m, height_face_m).
+  --smoothing-length MM keeps h at MM millimetres in every run (smoothing_ratio = h/dp, which the
+  scene allows from 1 to 2) instead of the scene's h/dp: it refines the particles within one kernel.
+  A softening soil's shear bands are about h wide, so this separates the deposit's dependence on
+  the particles from its dependence on the kernel (docs/sph.md, "Why MCC does not converge").
 cfl: the shipped scenes at one spacing for each CFL number, with the shipped and the implicit
   integrator; a run counts as unstable if it fails, if the wall guard acts, or if it is not at rest by
   its end time (2 s). Writes DIR/cfl.csv and DIR/cfl.md.
@@ -128,10 +133,13 @@ def richardson(h, v):
     return (order, v[2] + d2 / (2 ** order - 1)) if order >= 0.5 else None
 
 
-def block_overrides(scene, spacing_m, block):
-    """The --set values of one run: the spacing and, for the fixed block, the column keys that keep
-    the soil between the walls at the scene's W x H and the toe thickness at its H/10."""
+def block_overrides(scene, spacing_m, block, smoothing_m=None):
+    """The --set values of one run: the spacing, the smoothing ratio that keeps h at `smoothing_m`
+    (if given) and, for the fixed block, the column keys that keep the soil between the walls at the
+    scene's W x H and the toe thickness at its H/10."""
     overrides = [f"scene.particle_spacing={spacing_m}"]
+    if smoothing_m is not None:
+        overrides.append(f"scene.smoothing_ratio={smoothing_m / spacing_m!r}")
     if block == "fixed":
         keys = tomllib.loads((ROOT / "data" / "scenes" / f"{scene}.toml").read_text())["scene"]
         W, H = keys["column_width"], keys["column_height"]
@@ -143,8 +151,16 @@ def block_overrides(scene, spacing_m, block):
 def resolution(args):
     out = pathlib.Path(args.out)
     spacings = [float(s) for s in args.spacings.split(",")]
-    specs = [(f"{scene}-{s:g}mm", scene, block_overrides(scene, s / 1000, args.block) + args.set,
-              {"model_label": label, "spacing_mm": s, "block": args.block})
+    h = args.smoothing_length
+    if h is not None:
+        for s in spacings:
+            if not 1.0 <= h / s <= 2.0:
+                sys.exit(f"error: --smoothing-length {h:g} mm at spacing {s:g} mm is h/dp = {h / s:.3g} "
+                         "(allowed: 1 to 2, the scenes' smoothing_ratio range)")
+    specs = [(f"{scene}-{s:g}mm", scene,
+              block_overrides(scene, s / 1000, args.block, None if h is None else h / 1000) + args.set,
+              {"model_label": label, "spacing_mm": s, "block": args.block,
+               "smoothing_length_mm": "" if h is None else h})
              for s in sorted(spacings) for label, scene in SCENES.items()]  # finest first: longest first
     rows = run_all(specs, out, args.jobs, args.reuse)
     for r in rows:
@@ -156,6 +172,8 @@ def resolution(args):
     header = " | ".join(f"{name} ({unit})" for _, name, _, unit in measures)
     title = ("one W x H block at every spacing, measured from the walls' faces" if args.block == "fixed"
              else "shipped scenes")
+    if h is not None:
+        title += f", h = {h:g} mm at every spacing"
     lines = [f"# Resolution study (soilsph collapse, {title}, to rest or 1 s)", "",
              "Differences from the finest run in brackets (per cent; degrees for the angle).", "",
              f"| model | spacing (mm) | {header} | t end (s) | steps | wall (s) |",
@@ -443,6 +461,8 @@ def main():
         p.add_argument("--reuse", action="store_true", help="keep runs whose folder has a summary.json")
         if name == "resolution":
             p.add_argument("--spacings", default="4,2,1,0.5", help="particle spacings in mm")
+            p.add_argument("--smoothing-length", type=float, default=None,
+                           help="mm: keep h fixed (smoothing_ratio = h/dp, 1 to 2) instead of h/dp")
             p.add_argument("--block", choices=("paper", "fixed"), default="paper",
                            help="paper: the scenes' column keys; fixed: one W x H block at every spacing")
         elif name == "cut":
