@@ -151,16 +151,17 @@ def block_overrides(scene, spacing_m, block, smoothing_m=None):
 def resolution(args):
     out = pathlib.Path(args.out)
     spacings = [float(s) for s in args.spacings.split(",")]
-    h = args.smoothing_length
-    if h is not None:
+    smoothing_mm = args.smoothing_length  # h fixed at every spacing, or None
+    if smoothing_mm is not None:
         for s in spacings:
-            if not 1.0 <= h / s <= 2.0:
-                sys.exit(f"error: --smoothing-length {h:g} mm at spacing {s:g} mm is h/dp = {h / s:.3g} "
-                         "(allowed: 1 to 2, the scenes' smoothing_ratio range)")
+            if not 1.0 <= smoothing_mm / s <= 2.0:
+                sys.exit(f"error: --smoothing-length {smoothing_mm:g} mm at spacing {s:g} mm is "
+                         f"h/dp = {smoothing_mm / s:.3g} (allowed: 1 to 2, the scenes' smoothing_ratio range)")
     specs = [(f"{scene}-{s:g}mm", scene,
-              block_overrides(scene, s / 1000, args.block, None if h is None else h / 1000) + args.set,
+              block_overrides(scene, s / 1000, args.block,
+                              None if smoothing_mm is None else smoothing_mm / 1000) + args.set,
               {"model_label": label, "spacing_mm": s, "block": args.block,
-               "smoothing_length_mm": "" if h is None else h})
+               "smoothing_length_mm": "" if smoothing_mm is None else smoothing_mm})
              for s in sorted(spacings) for label, scene in SCENES.items()]  # finest first: longest first
     rows = run_all(specs, out, args.jobs, args.reuse)
     for r in rows:
@@ -172,8 +173,8 @@ def resolution(args):
     header = " | ".join(f"{name} ({unit})" for _, name, _, unit in measures)
     title = ("one W x H block at every spacing, measured from the walls' faces" if args.block == "fixed"
              else "shipped scenes")
-    if h is not None:
-        title += f", h = {h:g} mm at every spacing"
+    if smoothing_mm is not None:
+        title += f", h = {smoothing_mm:g} mm at every spacing"
     lines = [f"# Resolution study (soilsph collapse, {title}, to rest or 1 s)", "",
              "Differences from the finest run in brackets (per cent; degrees for the angle).", "",
              f"| model | spacing (mm) | {header} | t end (s) | steps | wall (s) |",
