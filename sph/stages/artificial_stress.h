@@ -54,17 +54,19 @@ inline bool set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
     p.rxx[i] = p.ryy[i] = p.rxy[i] = 0.0;
     return false;
   }
-  // Principal axes: tan 2θ = 2σxy / (σxx − σyy).
-  const double theta = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
-  const double c = std::cos(theta), sn = std::sin(theta);
-  const double s1 = c * c * sxx + 2.0 * c * sn * sxy + sn * sn * syy;
-  const double s2 = sn * sn * sxx - 2.0 * c * sn * sxy + c * c * syy;
+  // Principal stresses centre ± r and axes without trigonometry: with tan 2θ = 2σxy/(σxx − σyy),
+  // cos 2θ = ((σxx − σyy)/2)/r and sin 2θ = σxy/r, so c² = (1 + cos 2θ)/2, s² = (1 − cos 2θ)/2 and
+  // cs = sin 2θ/2 (θ = 0 for an isotropic stress, r = 0). s1 = centre + r is the one along θ.
+  const double r = std::sqrt(half_difference * half_difference + sxy * sxy);
+  const double cos2 = r > 0.0 ? half_difference / r : 1.0, sin2 = r > 0.0 ? sxy / r : 0.0;
+  const double cc = 0.5 * (1.0 + cos2), ss = 0.5 * (1.0 - cos2), cs = 0.5 * sin2;
+  const double s1 = centre + r, s2 = centre - r;
   const double scale = -epsilon / (p.density[i] * p.density[i]);
   const double r1 = s1 > 0.0 ? scale * s1 : 0.0;
   const double r2 = s2 > 0.0 ? scale * s2 : 0.0;
-  p.rxx[i] = c * c * r1 + sn * sn * r2;
-  p.ryy[i] = sn * sn * r1 + c * c * r2;
-  p.rxy[i] = c * sn * (r1 - r2);
+  p.rxx[i] = cc * r1 + ss * r2;
+  p.ryy[i] = ss * r1 + cc * r2;
+  p.rxy[i] = cs * (r1 - r2);
   return carries_artificial_stress(p, i);
 }
 

@@ -2,6 +2,7 @@
 // artificial stress (Gray et al. 2001), in the interior of a lattice.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "helpers.h"
@@ -107,20 +108,29 @@ TEST_CASE("eq 37: the viscosity pushes approaching particles apart and leaves re
 
 TEST_CASE("artificial stress: -eps sigma/rho^2 on tensile principal stresses only, rotated back",
           "[stages]") {
-  const double eps = 0.5, T = 300.0, C = -800.0, theta = 0.4;  // Pa; principal axes at θ to x
-  const double c = std::cos(theta), s = std::sin(theta);
-  Particles p = test::lattice(2, kDx, kRho);
-  // Particle 0: tension T along (c, s), compression C across; particle 1: compression only.
-  p.sxx[0] = T * c * c + C * s * s, p.syy[0] = T * s * s + C * c * c, p.sxy[0] = (T - C) * c * s;
-  p.sxx[1] = C, p.syy[1] = 2 * C, p.sxy[1] = 0.3 * C;
-  compute_artificial_stress(p, eps);
-  const double r = -eps * T / (kRho * kRho);  // only the tensile principal value
-  CHECK(p.rxx[0] == Approx(r * c * c));
-  CHECK(p.ryy[0] == Approx(r * s * s));
-  CHECK(p.rxy[0] == Approx(r * c * s));
-  CHECK(p.rxx[1] == 0.0);
-  CHECK(p.ryy[1] == 0.0);
-  CHECK(p.rxy[1] == 0.0);
+  // Principal stresses (σ_a, σ_b) along (c, s) and (−s, c): R = −ε Σ max(σ_k, 0)/ρ² n_k ⊗ n_k, for
+  // axes in every quadrant of 2θ, one or both tensile, and an isotropic tension (no axes).
+  const double eps = 0.5;
+  struct Case {
+    double a, b, theta;
+  };
+  for (const Case k : {Case{300.0, -800.0, 0.4}, Case{300.0, -800.0, 1.2}, Case{-800.0, 300.0, -0.9},
+                       Case{300.0, 120.0, 2.0}, Case{50.0, -1.0, 0.0}, Case{-5.0, 70.0, 1.5707963267948966},
+                       Case{200.0, 200.0, 0.3}}) {
+    const double c = std::cos(k.theta), s = std::sin(k.theta);
+    Particles p = test::lattice(2, kDx, kRho);
+    p.sxx[0] = k.a * c * c + k.b * s * s, p.syy[0] = k.a * s * s + k.b * c * c, p.sxy[0] = (k.a - k.b) * c * s;
+    p.sxx[1] = -800.0, p.syy[1] = -1600.0, p.sxy[1] = -240.0;  // compression only
+    compute_artificial_stress(p, eps);
+    const double ra = -eps * std::max(k.a, 0.0) / (kRho * kRho), rb = -eps * std::max(k.b, 0.0) / (kRho * kRho);
+    const double scale = eps * 800.0 / (kRho * kRho);
+    CHECK(p.rxx[0] == Approx(ra * c * c + rb * s * s).margin(1e-12 * scale));
+    CHECK(p.ryy[0] == Approx(ra * s * s + rb * c * c).margin(1e-12 * scale));
+    CHECK(p.rxy[0] == Approx((ra - rb) * c * s).margin(1e-12 * scale));
+    CHECK(p.rxx[1] == 0.0);
+    CHECK(p.ryy[1] == 0.0);
+    CHECK(p.rxy[1] == 0.0);
+  }
 }
 
 TEST_CASE("a rigid rotation turns the stress with the body (eq 23 spin, Jaumann terms)", "[stages]") {
