@@ -54,13 +54,14 @@ inline bool set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
     p.rxx[i] = p.ryy[i] = p.rxy[i] = 0.0;
     return false;
   }
-  // Principal stresses centre ± r and axes without trigonometry: with tan 2θ = 2σxy/(σxx − σyy),
-  // cos 2θ = ((σxx − σyy)/2)/r and sin 2θ = σxy/r, so c² = (1 + cos 2θ)/2, s² = (1 − cos 2θ)/2 and
-  // cs = sin 2θ/2 (θ = 0 for an isotropic stress, r = 0). s1 = centre + r is the one along θ.
-  const double r = std::sqrt(half_difference * half_difference + sxy * sxy);
-  const double cos2 = r > 0.0 ? half_difference / r : 1.0, sin2 = r > 0.0 ? sxy / r : 0.0;
+  // Principal stresses centre ± radius and axes without trigonometry: with tan 2θ = 2σxy/(σxx − σyy),
+  // cos 2θ = ((σxx − σyy)/2)/radius and sin 2θ = σxy/radius, so c² = (1 + cos 2θ)/2,
+  // s² = (1 − cos 2θ)/2 and cs = sin 2θ/2 (θ = 0 for an isotropic stress, radius 0). s1 = centre +
+  // radius is the one along θ.
+  const double radius = std::sqrt(half_difference * half_difference + sxy * sxy);
+  const double cos2 = radius > 0.0 ? half_difference / radius : 1.0, sin2 = radius > 0.0 ? sxy / radius : 0.0;
   const double cc = 0.5 * (1.0 + cos2), ss = 0.5 * (1.0 - cos2), cs = 0.5 * sin2;
-  const double s1 = centre + r, s2 = centre - r;
+  const double s1 = centre + radius, s2 = centre - radius;
   const double scale = -epsilon / (p.density[i] * p.density[i]);
   const double r1 = s1 > 0.0 ? scale * s1 : 0.0;
   const double r2 = s2 > 0.0 ? scale * s2 : 0.0;
