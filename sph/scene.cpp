@@ -247,6 +247,7 @@ Numerics read_numerics(const TableReader& t) {
       t.number_or("artificial_stress_exponent", 2.55, Range::closed(1.0, 10.0));
   n.cfl = t.number_or("cfl", 0.5, Range::open_closed(0.0, 2.0));  // measured limit and margin: docs/sph.md
   n.velocity_gradient_correction = t.boolean_or("velocity_gradient_correction", false);
+  n.ghost_body_force = t.boolean_or("ghost_body_force", true);
   return n;
 }
 

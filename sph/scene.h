@@ -89,6 +89,7 @@ struct Numerics {
   double artificial_stress_exponent;
   double cfl;                         ///< Δt = cfl · h / (c + |v|max)
   bool velocity_gradient_correction;  ///< kernel-gradient correction of eq 23 (default off)
+  bool ghost_body_force;              ///< ghosts continue the soil's weight across their wall (stages/boundaries.h)
 };
 
 /// [output]

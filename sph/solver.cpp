@@ -108,7 +108,8 @@ SolverSetup make_solver_setup(const Scene& scene) {
           scene.rest,
           domain(scene),
           scene.output.checkpoint_interval,
-          constant_c};
+          constant_c,
+          scene.numerics.ghost_body_force ? g.gravity : Vec2{}};
 }
 
 }  // namespace soilsph::sph

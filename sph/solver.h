@@ -79,6 +79,7 @@ struct SolverSetup {
   Domain domain;                    ///< no soil particle may leave it (blow_up.h)
   double checkpoint_interval = 0.0;  ///< s of simulated time between checkpoints (0: none at intervals)
   double constant_stiffness_sound_speed = 0.0;  ///< the largest c of the materials of constant stiffness
+  Vec2 ghost_body_force{};  ///< body force per mass the ghosts' normal stress balances (m/s²; 0: none)
 
   /// Δt of the soil at rest with the initial sound speed: the largest step the run takes while c
   /// does not fall.
@@ -247,7 +248,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
     //    ghosts read only what the soil rows do not write).
     const auto prepare = [&](std::size_t i) {
       nl.fill_row(i, p.x, p.y, setup.kernel);
-      if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i);
+      if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i, setup.ghost_body_force);
       work.volume[i] = particle_volume(p, i);
       if (m.artificial_stress.enabled() && set_artificial_stress(p, i, m.artificial_stress.epsilon()))
         work.any_tension.store(true, std::memory_order_relaxed);

@@ -37,6 +37,17 @@
 ///    σ̄_nt, 0.178): friction took 0.128 m/s off the free-slip block, 1.12 of Coulomb's μ g cos θ t
 ///    (a flat wall with gravity tilted by 30°: 1.20), so the wall transmits slightly more than
 ///    μσ'_n; why is open (docs/scenes.md, Limits). δ = 45° still holds it.
+/// The soil's weight continues across the wall ([numerics] ghost_body_force, default on): each soil
+/// neighbour's normal stress is carried to the ghost along n by the normal equilibrium
+/// ∂σ_nn/∂n = −ρ b·n (b the body force per mass, gravity; the wall at rest or moving steadily), so
+///   σ_b += Δ n⊗n,  Δ = (b·n) Σ_j W_bj ρ_j n·(x_j − x_b) / Σ_j W_bj,
+/// the stress counterpart of Adami et al.'s (2012) hydrostatic ghost pressure (their eq 27), along the
+/// normal only: σ_tt and σ_nt have no equilibrium that fixes their normal gradient. For the geostatic
+/// column (uniform ρ, σ_yy = −ρg(y_top − y)) a floor ghost then carries exactly the geostatic σ_yy of
+/// its own depth; without it the ghost has the soil's average, 3 % less compression at 2 mm, and
+/// the bottom row starts falling at 0.51 g (tests/sph/test_boundaries.cpp). Δ leaves σ_nt, hence
+/// the friction, unchanged. The wall guard of soil flowing over a floor at h/Δp = 3.2 halves with it
+/// (docs/sph.md), the shipped scenes never need the guard either way.
 /// The stick flag s is decided with the stress (loop 1 of the step) and used for the velocity (loop 3).
 /// For axis-aligned walls with v_w = 0 these are the column's former formulas, operation for
 /// operation: (σxx, σyy, −σxy) and (−v̄x, v̄y) on a vertical free-slip wall, σ̄ and −v̄ on the no-slip
@@ -58,11 +69,15 @@ namespace soilsph::sph {
 /// The slip speed along a frictional wall (m/s) below which the soil may stick (see above).
 inline constexpr double kStickSlip = 1e-4;
 
-/// Sets ghost b's stress, density and stick flag from the soil (σ^n, ρ^n, before the momentum equation).
-inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std::size_t b) {
+/// Sets ghost b's stress, density and stick flag from the soil (σ^n, ρ^n, before the momentum
+/// equation), the normal stress balancing the body force per mass `body` (see above).
+inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std::size_t b, Vec2 body = {}) {
   double sum_w = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, rho = 0.0, vx = 0.0, vy = 0.0;
+  double mx = 0.0, my = 0.0;  // Σ_j W_bj ρ_j (x_b − x_j)
   nl.for_each_pair(b, [&](const NeighbourList::Pair& q) {  // soil: no boundary–boundary pairs
     sum_w += q.w;
+    mx += q.w * p.density[q.j] * q.rx;
+    my += q.w * p.density[q.j] * q.ry;
     sxx += q.w * p.sxx[q.j];
     syy += q.w * p.syy[q.j];
     sxy += q.w * p.sxy[q.j];
@@ -94,6 +109,10 @@ inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std:
   p.sxx[b] = sxx + change * (2.0 * nx * tx);
   p.syy[b] = syy + change * (2.0 * ny * ty);
   p.sxy[b] = sxy + change * (nx * ty + tx * ny);
+  const double delta = -(body.x * nx + body.y * ny) * (mx * nx + my * ny) / sum_w;  // Δ above
+  p.sxx[b] += delta * nx * nx;
+  p.syy[b] += delta * ny * ny;
+  p.sxy[b] += delta * nx * ny;
   p.density[b] = rho / sum_w;
 }
 

@@ -527,6 +527,13 @@ std::vector<Spec> make_specs() {
                {"true", "false", "\"no\""},
                {},
                {}});
+  s.push_back({"numerics",
+               "ghost_body_force",
+               Type::Boolean,
+               false,
+               {"true", "false", "\"no\""},
+               {},
+               {}});
   // [output]
   s.push_back(
       {"output",

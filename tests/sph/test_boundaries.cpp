@@ -93,3 +93,81 @@ TEST_CASE("the wall guard puts back a particle found beyond a wall", "[boundarie
   CHECK(p.vx[3] == 0.0);
   CHECK(guard.apply(p, 0.0) == 0);
 }
+
+namespace {
+/// The linear-elastic column held by both walls at its geostatic state, 2 mm, with the floor's
+/// ghosts continuing the soil's weight (`body`) or not.
+struct GeostaticColumn {
+  Scene scene = test::scene_from_text(R"(
+[scene]
+column_width = 0.04
+column_height = 0.06
+particle_spacing = 0.002
+smoothing_ratio = 1.3
+end_time = 0.01
+gravity = 9.81
+floor_length = 0.05
+wall_withdrawal = "none"
+)" + fixtures::kLinearElasticToml);
+  Particles p = build_particles(scene);
+  SolverSetup setup = make_solver_setup(scene);
+  GeostaticColumn() { set_geostatic_state(p, scene); }
+};
+}  // namespace
+
+TEST_CASE("a floor ghost carries the geostatic stress of its own depth, a side-wall ghost the soil's",
+          "[boundaries]") {
+  GeostaticColumn c;
+  NeighbourList nl;
+  nl.build(c.p.x, c.p.y, c.setup.kernel, c.p.soil_count);
+  const double rho = c.p.density[0], g = 9.81, dp = 0.002, top = 0.06 + 0.5 * dp;
+  std::size_t floor_ghosts = 0, wall_ghosts = 0;
+  for (std::size_t b = c.p.soil_count; b < c.p.size(); ++b) {
+    if (nl.pair_count(b) == 0) continue;
+    mirror_stress_onto_ghost(c.p, nl, b, c.setup.ghost_body_force);
+    const std::size_t k = b - c.p.soil_count;
+    if (c.p.wall_ny[k] == 1.0) {
+      ++floor_ghosts;
+      // Σ_j W (σ_yy,j − ρ g (y_j − y_b)) / Σ_j W with σ_yy,j = −ρ g (top − y_j): exactly −ρ g (top − y_b).
+      CHECK(c.p.syy[b] == Approx(-rho * g * (top - c.p.y[b])).epsilon(1e-12));
+    } else if (std::abs(c.p.wall_nx[k]) == 1.0) {
+      ++wall_ghosts;  // gravity along the wall: g·n = 0, the normal stress is the soil's average
+      double w = 0.0, sxx = 0.0;
+      nl.for_each_pair(b, [&](const NeighbourList::Pair& q) { w += q.w, sxx += q.w * c.p.sxx[q.j]; });
+      CHECK(c.p.sxx[b] == Approx(sxx / w).epsilon(1e-12));
+    }
+  }
+  CHECK(floor_ghosts > 0);
+  CHECK(wall_ghosts > 0);
+}
+
+namespace {
+/// a_y / g after the first step of the held geostatic column, averaged over the soil of lattice row
+/// `row` (0 at the floor) away from the side walls.
+double row_acceleration(const GeostaticColumn& start, int row) {
+  GeostaticColumn c = start;
+  Workspace work(c.setup, c.p);
+  advance(std::get<LinearElastic>(c.scene.material), c.setup, c.p, work, c.setup.initial_time_step());
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < c.p.soil_count; ++i)
+    if (std::abs(c.p.y0[i] - row * 0.002) < 1e-9 && c.p.x0[i] > 0.006 && c.p.x0[i] < 0.034) sum += c.p.ay[i], ++n;
+  REQUIRE(n > 0);
+  return sum / n / 9.81;
+}
+}  // namespace
+
+TEST_CASE("the geostatic column is as much in equilibrium at the floor as inside; without the ghosts' "
+          "weight its bottom row falls",
+          "[boundaries]") {
+  // Inside, a_y = (m − 1) g with m the lattice moment of the kernel gradient (1.0105 at h = 1.3 Δp,
+  // tests/sph/test_velocity_gradient.cpp): the stress gradient ρg is overestimated by that factor.
+  const GeostaticColumn with_weight;
+  const double interior = row_acceleration(with_weight, 10);
+  CHECK(interior == Approx(0.0105).margin(5e-4));
+  for (int row = 0; row < 3; ++row) CHECK(row_acceleration(with_weight, row) == Approx(interior).margin(1e-3));
+  GeostaticColumn without;
+  without.setup.ghost_body_force = {};
+  CHECK(row_acceleration(without, 10) == Approx(interior).margin(1e-12));
+  CHECK(row_acceleration(without, 0) < interior - 0.1);  // −0.51 g measured
+}
