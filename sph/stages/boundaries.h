@@ -139,22 +139,6 @@ inline void mirror_velocity_onto_ghost(const Particles& p, const NeighbourList& 
   vy[b] = v_y - 2.0 * dn * ny - 2.0 * s * dt * ty;
 }
 
-/// Every ghost's stress and density (orphaned OpenMP loop).
-inline void mirror_stress_onto_boundary(Particles& p, const NeighbourList& nl) {
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp for schedule(static)
-  for (std::ptrdiff_t s = static_cast<std::ptrdiff_t>(p.soil_count); s < n; ++s)
-    mirror_stress_onto_ghost(p, nl, static_cast<std::size_t>(s));
-}
-
-/// Every ghost's velocity in p.vx, p.vy (orphaned OpenMP loop).
-inline void mirror_velocity_onto_boundary(Particles& p, const NeighbourList& nl) {
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp for schedule(static)
-  for (std::ptrdiff_t s = static_cast<std::ptrdiff_t>(p.soil_count); s < n; ++s)
-    mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), p.vx, p.vy);
-}
-
 /// The friction coefficient μ a ghost of this wall mirrors with (see above).
 inline double wall_friction_coefficient(const Wall& wall) {
   switch (wall.kind) {
