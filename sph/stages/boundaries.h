@@ -32,11 +32,12 @@
 ///    wall pushes the soil by −τ t. Friction opposing a slip along +t therefore needs τ > 0, the
 ///    sign of Δv_t (as in the no-slip case: soil moving along +t over a stuck wall has
 ///    ∂v_t/∂n > 0, so σ_nt = 2G ε_nt > 0, which brakes it). Measured (block_on_incline, 1 mm,
-///    0.05 s): the block with δ = 15° on the 30° incline reached 0.082 m/s down the
-///    slope (free slip 0.210, Coulomb g(sin θ − tan δ cos θ) t = 0.131; the former switch, reading
-///    σ̄_nt, 0.178): friction took 0.128 m/s off the free-slip block, 1.12 of Coulomb's μ g cos θ t
-///    (a flat wall with gravity tilted by 30°: 1.20), so the wall transmits slightly more than
-///    μσ'_n; why is open (docs/scenes.md, Limits). δ = 45° still holds it.
+///    0.05 s): the block with δ = 15° on the 30° incline reached 0.078 m/s down the
+///    slope (free slip 0.211, Coulomb g(sin θ − tan δ cos θ) t = 0.131; the former switch, reading
+///    σ̄_nt, 0.178): friction took 0.133 m/s off the free-slip block, 1.17 of Coulomb's μ g cos θ t
+///    (1.12 without the ghosts' weight below; a flat wall with gravity tilted by 30°, then: 1.20),
+///    so the wall transmits slightly more than μσ'_n; why is open (docs/scenes.md, Limits). δ = 45°
+///    still holds it.
 /// The soil's weight continues across the wall ([numerics] ghost_body_force, default on): each soil
 /// neighbour's normal stress is carried to the ghost along n by the normal equilibrium
 /// ∂σ_nn/∂n = −ρ b·n (b the body force per mass, gravity; the wall at rest or moving steadily), so

@@ -221,8 +221,9 @@ TEST_CASE("a block slides down a frictional wall at Coulomb's rate", "[walls]") 
   const Motion free = mean_motion(run_for(block_on_incline("kind = \"free-slip\"")).p);
   // The staircase base of the lattice-cut block brakes it on free slip too (0.85 g sin θ, above),
   // so the friction is measured against the same block on free slip: the velocity friction takes
-  // off, free − frictional, against Coulomb's μ g cos θ t = 0.114 m/s. Measured: 0.210 − 0.082 =
-  // 0.128 m/s, 1.12 of it (the same block on a flat wall with gravity tilted: 1.20; the former
+  // off, free − frictional, against Coulomb's μ g cos θ t = 0.114 m/s. Measured: 0.211 − 0.078 =
+  // 0.133 m/s, 1.17 of it (1.12 before the ghosts carried the soil's weight; the same block on a
+  // flat wall with gravity tilted, then: 1.20; the former
   // switch, which read the stress: 0.210 − 0.178 = 0.032, 0.28 of it); the band is 0.85 to 1.3.
   const double coulomb_loss = 9.81 * mu * std::cos(theta) * 0.05;
   CHECK(m.along - free.along > 0.85 * coulomb_loss);
