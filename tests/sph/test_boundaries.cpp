@@ -96,7 +96,7 @@ TEST_CASE("the wall guard puts back a particle found beyond a wall", "[boundarie
 
 namespace {
 /// The linear-elastic column held by both walls at its geostatic state, 2 mm, with the floor's
-/// ghosts continuing the soil's weight (`body`) or not.
+/// ghosts continuing the soil's weight (`setup.ghost_body_force`, the default) or not.
 struct GeostaticColumn {
   Scene scene = test::scene_from_text(R"(
 [scene]
