@@ -49,8 +49,9 @@ inline bool carries_artificial_stress(const Particles& p, std::size_t i) {
 inline bool set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
   const double sxx = p.sxx[i], syy = p.syy[i], sxy = p.sxy[i];
   const double centre = 0.5 * (sxx + syy), half_difference = 0.5 * (sxx - syy);
+  const double radius2 = half_difference * half_difference + sxy * sxy;  // of Mohr's circle
   // σ_max ≤ 0 without the square root: centre ≤ 0 and radius² ≤ centre².
-  if (centre <= 0.0 && half_difference * half_difference + sxy * sxy <= centre * centre) {
+  if (centre <= 0.0 && radius2 <= centre * centre) {
     p.rxx[i] = p.ryy[i] = p.rxy[i] = 0.0;
     return false;
   }
@@ -58,7 +59,7 @@ inline bool set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
   // cos 2θ = ((σxx − σyy)/2)/radius and sin 2θ = σxy/radius, so c² = (1 + cos 2θ)/2,
   // s² = (1 − cos 2θ)/2 and cs = sin 2θ/2 (θ = 0 for an isotropic stress, radius 0). s1 = centre +
   // radius is the one along θ.
-  const double radius = std::sqrt(half_difference * half_difference + sxy * sxy);
+  const double radius = std::sqrt(radius2);
   const double cos2 = radius > 0.0 ? half_difference / radius : 1.0, sin2 = radius > 0.0 ? sxy / radius : 0.0;
   const double cc = 0.5 * (1.0 + cos2), ss = 0.5 * (1.0 - cos2), cs = 0.5 * sin2;
   const double s1 = centre + radius, s2 = centre - radius;
