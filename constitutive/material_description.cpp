@@ -67,6 +67,8 @@ Parameters parameters(const ModifiedCamClay& m) {
   out.emplace_back("substep_tolerance", number(p.substep_tolerance));
   out.emplace_back("implicit_alpha", number(p.implicit_alpha));
   out.emplace_back("implicit_tolerance", number(p.implicit_tolerance));
+  if (p.minimum_preconsolidation > 0.0)  // absent: none
+    out.emplace_back("minimum_preconsolidation", number(p.minimum_preconsolidation));
   return out;
 }
 Parameters parameters(const MohrCoulomb& m) {

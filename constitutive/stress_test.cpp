@@ -178,6 +178,8 @@ std::vector<StressTestMaterial> stress_test_materials() {
   mcc.young_modulus = 1.0e6, mcc.elastic_pressure_floor = 1.0e3;
   ModifiedCamClay::Params mcc_constant = mcc;
   mcc_constant.elasticity = Elasticity::Kind::Constant;
+  ModifiedCamClay::Params mcc_bounded = mcc_constant;  // the SPH scene's soil: softening stops at 100 Pa
+  mcc_bounded.minimum_preconsolidation = 100.0;
   MohrCoulomb::Params mc{};  // the Table 1 soil's E, ν, φ
   mc.density = 2000.0, mc.young_modulus = 1.0e6, mc.poisson_ratio = 0.3, mc.friction_angle = 35.0;
   mc.cohesion = 5e3, mc.dilatancy_angle = 10.0;
@@ -187,6 +189,7 @@ std::vector<StressTestMaterial> stress_test_materials() {
           {"drucker-prager (c = 5 kPa, psi = 10 deg)", "dp-cohesive", DruckerPrager(dp_cohesive)},
           {"modified-cam-clay (Table 1, pressure-dependent K)", "mcc", ModifiedCamClay(mcc)},
           {"modified-cam-clay (Table 1, constant E)", "mcc-constant-E", ModifiedCamClay(mcc_constant)},
+          {"modified-cam-clay (Table 1, constant E, p_c,min = 100 Pa)", "mcc-bounded", ModifiedCamClay(mcc_bounded)},
           {"mohr-coulomb (c = 5 kPa, psi = 10 deg)", "mc", MohrCoulomb(mc)},
           {"mohr-coulomb (c = 5 kPa, psi = 10 deg, T = 2 kPa)", "mc-cutoff", MohrCoulomb(mc_cutoff)}};
 }

@@ -131,7 +131,8 @@ YieldEntry yield_entry(const ModifiedCamClay& model, const IncrementTerms& incre
 /// driver's Newton, without splitting, completed 2 of 9 runs; with the cap, 8). The cap keeps that
 /// factor ≥ 0, is continuous in Δε, and tends to backward Euler as z → ∞; below the cap nothing
 /// changes.
-/// Volumetric part: r1 = v − M²[w_t (2p_t − p_c,n) + w_e (2p − p_c)].
+/// Volumetric part: r1 = v − M²[w_t (2p_t − p_c,n) + w_e (2p − p_c)], p_c = p_c(v) of eq 27 with the
+/// softening bound p_c,min (ModifiedCamClay::hardened).
 class CamClayReturn {
  public:
   CamClayReturn(const ModifiedCamClay& model, const IncrementTerms& increment, double alpha,
@@ -160,6 +161,7 @@ class CamClayReturn {
   struct Point {
     double v, l;              ///< unknowns
     double p, pc;             ///< mean pressure and p_c
+    double theta;             ///< d ln p_c/dv: θ, or 0 where softening has stopped at p_c,min
     double Kt, G, dG;         ///< tangent bulk modulus at p, secant shear modulus, dG/dp
     double wt, wt_l, wt_G;    ///< the entry's flow weight w_t and its partials ∂/∂Δλ, ∂/∂G
     double kG, B;             ///< 6G w_t (the weight of s_t in a) and B = 1 + 6G w_e
@@ -181,7 +183,10 @@ class CamClayReturn {
     const double elastic_volume = d_eps_v_ - v;
     const ElasticVolumeStep step = elasticity.volume_step(p_n_, elastic_volume);
     x.p = step.p;
-    x.pc = pc_n_ * std::exp(theta_ * v);
+    // Eq 27 exact over the increment, softening no further than p_c,min (ModifiedCamClay::hardened):
+    // p_c(v) is continuous and non-decreasing, flat below the bound.
+    x.pc = model_.hardened(pc_n_, v);
+    x.theta = x.pc > std::min(pc_n_, model_.minimum_preconsolidation()) ? theta_ : 0.0;
     x.Kt = step.tangent.K;
     x.G = step.secant.G;
     // G and p are both functions of the elastic volume alone, so dG/dp = (dG/dε_v^e)/K_t.
@@ -208,7 +213,7 @@ class CamClayReturn {
   /// r1 = v − M² (volumetric flow) and its derivatives; dG/dv = −dG/dp K_t.
   double r1(const Point& x) const { return x.v - M2_ * volumetric_flow(x); }
   double r1_v(const Point& x) const {
-    return 1.0 + M2_ * (x.we() * (2.0 * x.Kt + theta_ * x.pc) +
+    return 1.0 + M2_ * (x.we() * (2.0 * x.Kt + x.theta * x.pc) +
                         (entry_flow_p_ - (2.0 * x.p - x.pc)) * x.wt_G * x.dG * x.Kt);
   }
   double r1_l(const Point& x) const {
@@ -224,9 +229,9 @@ class CamClayReturn {
   double q2_l(const Point& x) const {
     return 1.5 * (2.0 * a_dot_a_l(x) / (x.B * x.B) - 2.0 * x.A2 * x.B_l() / (x.B * x.B * x.B));
   }
-  /// ∂f/∂v (dp/dv = −K_t, dp_c/dv = θ p_c) and ∂f/∂Δλ.
+  /// ∂f/∂v (dp/dv = −K_t, dp_c/dv = θ p_c with the point's θ) and ∂f/∂Δλ.
   double f_v(const Point& x) const {
-    return -M2_ * ((2.0 * x.p - x.pc) * x.Kt + theta_ * x.p * x.pc) - q2_G(x) * x.dG * x.Kt;
+    return -M2_ * ((2.0 * x.p - x.pc) * x.Kt + x.theta * x.p * x.pc) - q2_G(x) * x.dG * x.Kt;
   }
   double f_l(const Point& x) const { return q2_l(x); }
   /// The size of the terms of f, for a relative convergence test.

@@ -35,6 +35,7 @@ void ModifiedCamClayParams::fields(const Io& io) {
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
   io.number_or("implicit_alpha", implicit_alpha, Range::closed(0.5, 1.0));
   io.number_or("implicit_tolerance", implicit_tolerance, Range::closed(0.0, 1e-2));
+  io.number_or("minimum_preconsolidation", minimum_preconsolidation, Range::closed(0.0, limits::kMaxStress), "Pa");
 }
 
 ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) { return read_fields<ModifiedCamClayParams>(t); }
@@ -84,18 +85,19 @@ Mat3 ModifiedCamClay::yield_gradient(const Mat3& sigma, double pc) const {
 }
 
 double ModifiedCamClay::hardening_modulus(const Mat3& sigma, double pc) const {
-  const double p = mean_pressure(sigma);
-  return theta_ * p * pc * M_ * M_ * M_ * M_ * (2.0 * p - pc);
+  // The flow's plastic volume has the sign of ∂f/∂p = M²(2p − p_c): compaction where 2p > p_c.
+  const double p = mean_pressure(sigma), compaction = 2.0 * p - pc;
+  return hardening_exponent_at(pc, compaction) * p * pc * M_ * M_ * M_ * M_ * compaction;
 }
 
 double ModifiedCamClay::harden(double pc, const Mat3& d_plastic_strain) const {
-  return pc * std::exp(theta_ * volumetric_strain(d_plastic_strain));
+  return hardened(pc, volumetric_strain(d_plastic_strain));
 }
 
 double ModifiedCamClay::initial_preconsolidation(const Mat3& sigma, double ocr, double floor) const {
   const double p = mean_pressure(sigma), q = deviatoric_stress(sigma);
   const double on_surface = p > 0.0 ? p + q * q / (M_ * M_ * p) : 0.0;
-  return std::max(ocr * on_surface, floor);
+  return std::max({ocr * on_surface, floor, params_.minimum_preconsolidation});
 }
 
 StateMarks ModifiedCamClay::marks(const State& s) const {

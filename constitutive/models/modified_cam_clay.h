@@ -4,8 +4,11 @@
 ///   yield      f = M²p² + q² − M² p p_c                                    (eq 24)
 ///   slope      M = 6 sinφ / (3 − sinφ)  (triaxial compression, used at every Lode angle)  (eq 26)
 ///   hardening  p_c = p_c0 exp[(1+e0)/(λ−κ) · ε_v^p], ε_v^p compression-positive   (eq 27)
+///              softening no further than p_c,min (`minimum_preconsolidation`, default 0: none)
 /// The paper writes eq 27 for compression-positive ε_v^p while its stresses are tension-positive
 /// (paper-notes): the flow rule's plastic volume is negated before it enters the hardening law.
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "constitutive/elasticity.h"
@@ -43,6 +46,10 @@ struct ModifiedCamClayParams {
   /// `implicit`: local error tolerance of the error-controlled sub-incrementation (relative stress
   /// change, see implicit_update in implicit_cam_clay.h); 0 (the default) is one return per increment.
   double implicit_tolerance = 0.0;
+  /// Pa: the smallest p_c that softening reaches, the loosest state of the soil (its largest void
+  /// ratio on the normal compression line, e = e_N − λ ln p_c,min); 0 (the default): none, eq 27 as
+  /// printed. Compression still hardens from it. See hardening_exponent_at().
+  double minimum_preconsolidation = 0.0;
 
   static ModifiedCamClayParams read(const TableReader& table);
   /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
@@ -66,6 +73,24 @@ class ModifiedCamClay {
   double M() const { return M_; }
   /// (1+e0)/(λ−κ): the hardening exponent per unit plastic volumetric strain (eq 27).
   double hardening_exponent() const { return theta_; }
+  /// p_c,min: softening stops there (0: never).
+  double minimum_preconsolidation() const { return params_.minimum_preconsolidation; }
+  /// The exponent that applies at p_c for a plastic volume change of the sign of `compaction`
+  /// (compression-positive): θ, or 0 where softening (compaction < 0) has reached p_c,min. The dry
+  /// side's softening then stops: the surface keeps the size of the loosest state, and flow there is
+  /// perfectly plastic. Without the bound a free-surface particle softens to p_c ~ 1e-11 Pa ("dust")
+  /// and must then compact by ln(p/p_c)/θ ≈ 90 % in volume before it carries 100 Pa again: in the SPH
+  /// collapse of a soft overconsolidated column such grains fell onto the toe, were compressed to
+  /// 1.5–1.8× their density and pushed into the floor (docs/sph.md, "The loosest state").
+  double hardening_exponent_at(double pc, double compaction) const {
+    return compaction < 0.0 && pc <= params_.minimum_preconsolidation ? 0.0 : theta_;
+  }
+  /// p_c after a plastic volume change ε_v^p (compression-positive) from p_c: eq 27 exact, with
+  /// softening stopped at p_c,min (a start already below it softens no further).
+  double hardened(double pc, double plastic_volume) const {
+    const double exact = pc * std::exp(theta_ * plastic_volume);
+    return std::max(exact, std::min(pc, params_.minimum_preconsolidation));
+  }
 
   /// f(σ, p_c) (eq 24), in Pa².
   double yield(const Mat3& sigma, double pc) const;
@@ -83,7 +108,7 @@ class ModifiedCamClay {
   /// p_c is the hardening variable: an OCR sets it.
   static constexpr bool kHasPreconsolidation = true;
   /// The initial p_c at effective stress σ with overconsolidation ratio OCR:
-  ///   p_c = max(OCR · (p + q²/(M² p)), floor),
+  ///   p_c = max(OCR · (p + q²/(M² p)), floor, p_c,min),
   /// OCR times the p_c of the ellipse through (p, q) (eq 24), OCR · p on an isotropic state; 0
   /// before the floor where p ≤ 0 (a free surface). One formula for the point programmes and the
   /// SPH column (whose [initial] preconsolidation_floor keeps the top from having no strength).
@@ -91,7 +116,8 @@ class ModifiedCamClay {
   /// ṗ_c of the rate equations (CVODE reference) for plastic flow λ̇ n_g: eq 27 in rate form,
   /// (1+e0)/(λ−κ) · p_c · (−tr ε̇^p) with the compression-positive plastic volume −tr ε̇^p.
   double hardening_rate(const Mat3& /*sigma*/, double pc, double lambda_dot, const Mat3& n_g) const {
-    return theta_ * pc * (-lambda_dot * n_g.trace());
+    const double compaction = -lambda_dot * n_g.trace();
+    return hardening_exponent_at(pc, compaction) * pc * compaction;
   }
   /// The stress test's marks: p' < 0.01 p_c, and a plastic state with |q/(M p') − 1| < 0.05.
   StateMarks marks(const State& s) const;
