@@ -257,9 +257,19 @@ void run_collapse(const CollapseOptions& o) {
               << "/; continue with: soilsph collapse --resume " << dir.string() << '\n';
     throw ExitCode{128 + signal.received()};
   }
-  if (stats.guard_corrections > 0)
+  if (stats.guard_corrections > 0) {
     std::cerr << "warning: the wall guard had to push soil particles back through a wall "
-              << stats.guard_corrections << " times (0 in a sound run; a smaller [numerics] cfl)\n";
+              << stats.guard_corrections << " times (0 in a sound run; a smaller [numerics] cfl";
+    // Soft or overconsolidated MCC sheds grains that soften to dust and are compacted into the floor.
+    const bool unbounded_cam_clay = std::ranges::any_of(scene.materials, [](const Material& m) {
+      const auto* mcc = std::get_if<ModifiedCamClay>(&m);
+      return mcc && mcc->minimum_preconsolidation() == 0.0;
+    });
+    if (unbounded_cam_clay)
+      std::cerr << "; for modified-cam-clay soil a [material] minimum_preconsolidation such as 10 Pa, "
+                   "docs/sph.md \"The loosest state\"";
+    std::cerr << ")\n";
+  }
   if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
   std::cout << "runout " << summary.runout_m << " m (" << summary.runout_thick_m << " m where H0/10 thick), height "
             << summary.height_m << " m, repose angle " << summary.repose_angle_deg << " deg, max speed at end "

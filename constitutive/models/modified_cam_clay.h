@@ -81,7 +81,8 @@ class ModifiedCamClay {
   /// perfectly plastic. Without the bound a free-surface particle softens to p_c ~ 1e-11 Pa ("dust")
   /// and must then compact by ln(p/p_c)/θ ≈ 90 % in volume before it carries 100 Pa again: in the SPH
   /// collapse of a soft overconsolidated column such grains fell onto the toe, were compressed to
-  /// 1.5–1.8× their density and pushed into the floor (docs/sph.md, "The loosest state").
+  /// 1.5–1.8× their density and pushed into the floor; a bound of 10 Pa keeps them out (docs/sph.md,
+  /// "The loosest state").
   double hardening_exponent_at(double pc, double compaction) const {
     return compaction < 0.0 && pc <= params_.minimum_preconsolidation ? 0.0 : theta_;
   }
