@@ -80,6 +80,10 @@ TEST_CASE("MCC softening bound: p_c never below it, compaction still hardens fro
   CHECK(mcc.hardening_exponent_at(1e3, -1.0) == 0.0);
   CHECK(mcc.hardening_exponent_at(1e3, 1.0) == mcc.hardening_exponent());
   CHECK(mcc.hardening_exponent_at(1.5e3, -1.0) == mcc.hardening_exponent());
+  // Validated where the model is built, naming the key.
+  ModifiedCamClay::Params negative = p;
+  negative.minimum_preconsolidation = -1.0;
+  CHECK_THROWS_WITH(ModifiedCamClay(negative), Catch::Contains("minimum_preconsolidation"));
   // The initial p_c of a nearly stress-free state is the bound.
   CHECK(mcc.initial_preconsolidation(isotropic_stress(10.0), 1.0) == 1e3);
   // Elastic unloading inside the bound's surface, then a dust-like return: a state at p_c = bound
