@@ -79,9 +79,9 @@ class ModifiedCamClay {
   /// (compression-positive): θ, or 0 where softening (compaction < 0) has reached p_c,min. The dry
   /// side's softening then stops: the surface keeps the size of the loosest state, and flow there is
   /// perfectly plastic. Without the bound a free-surface particle softens to p_c ~ 1e-11 Pa ("dust")
-  /// and must then compact by ln(p/p_c)/θ ≈ 90 % in volume before it carries 100 Pa again: in the SPH
+  /// and must then compact by a plastic volume ln(p/p_c)/θ ≈ 1 before it carries 100 Pa again: in the SPH
   /// collapse of a soft overconsolidated column such grains fell onto the toe, were compressed to
-  /// 1.5–1.8× their density and pushed into the floor; a bound of 10 Pa keeps them out (docs/sph.md,
+  /// 1.6–1.9× their density and pushed into the floor; a bound of 10 Pa keeps them out (docs/sph.md,
   /// "The loosest state").
   double hardening_exponent_at(double pc, double compaction) const {
     return compaction < 0.0 && pc <= params_.minimum_preconsolidation ? 0.0 : theta_;
