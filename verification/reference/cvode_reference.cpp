@@ -110,8 +110,19 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   return r.stress.allFinite() && std::isfinite(r.pc) ? 0 : 1;  // 1: recoverable, CVODE cuts the step
 }
 
-/// Elastic branch: the yield function (its crossing of 0 upwards is first yield). Plastic branch:
-/// λ̇ (its crossing of 0 downwards is elastic unloading).
+/// The smallest p_c the model's softening reaches (MCC's minimum_preconsolidation), 0 for none.
+template <class Model>
+double softening_bound(const Model& model) {
+  if constexpr (requires { model.minimum_preconsolidation(); })
+    return model.minimum_preconsolidation();
+  else
+    return 0.0;
+}
+
+/// g[0], elastic branch: the yield function (its crossing of 0 upwards is first yield); plastic
+/// branch: λ̇ (its crossing of 0 downwards is elastic unloading). g[1]: p_c − p_c,min, whose crossing
+/// downwards is where softening stops (the rate ṗ_c jumps from θ p_c,min ε̇_v^p to 0 there, a kink no
+/// step may straddle); constant where the model has no bound.
 template <class Model>
 int switching_function(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
   auto& problem = *static_cast<Problem<Model>*>(data);
@@ -125,6 +136,8 @@ int switching_function(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
   } else {
     g[0] = -1.0;
   }
+  const double bound = softening_bound(*problem.model);
+  g[1] = bound > 0.0 ? v[kPc] - bound : 1.0;
   return 0;
 }
 
@@ -214,7 +227,7 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   s.linear_solver = SUNLinSol_Dense(s.y, s.matrix, s.context);
   check(CVodeSetLinearSolver(s.memory, s.linear_solver, s.matrix), "CVodeSetLinearSolver", problem);
   check(CVodeSetMaxNumSteps(s.memory, options.max_steps_per_increment), "CVodeSetMaxNumSteps", problem);
-  check(CVodeRootInit(s.memory, 1, switching_function<Model>), "CVodeRootInit", problem);
+  check(CVodeRootInit(s.memory, 2, switching_function<Model>), "CVodeRootInit", problem);
   check(CVodeSetNoInactiveRootWarn(s.memory), "CVodeSetNoInactiveRootWarn", problem);
 
   std::size_t leg_index = 0;
@@ -229,8 +242,8 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
       problem.plastic =
           starts_plastic(model, leg, problem.part, stress_of(y), y[kPc], options.surface_tolerance);
       check(CVodeReInit(s.memory, 0.0, s.y), "CVodeReInit", problem);
-      int direction = problem.plastic ? -1 : 1;
-      check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
+      int directions[2] = {problem.plastic ? -1 : 1, -1};
+      check(CVodeSetRootDirection(s.memory, directions), "CVodeSetRootDirection", problem);
       sunrealtype t = 0.0;
       for (int k = 1; k <= leg.increments; ++k) {
         for (int switches = 0;; ++switches) {
@@ -251,14 +264,21 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
           if (flag != CV_ROOT_RETURN) break;
           if (switches > 100)
             throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
-          // Switch branch at the root and restart there, so no step straddles the kink: to elastic
-          // where λ̇ reached 0; to plastic where f reached 0 unless the loading is tangential and
-          // turns inwards (then the state stays elastic).
-          problem.plastic = !problem.plastic && starts_plastic(model, leg, problem.part, stress_of(y), y[kPc],
-                                                               std::numeric_limits<double>::infinity());
-          direction = problem.plastic ? -1 : 1;
+          int found[2] = {0, 0};
+          check(CVodeGetRootInfo(s.memory, found), "CVodeGetRootInfo", problem);
+          if (found[1] != 0) {
+            // Softening reached the bound: p_c onto it exactly, where the model's rate is 0, and on.
+            y[kPc] = softening_bound(model);
+          } else {
+            // Switch branch at the root and restart there, so no step straddles the kink: to
+            // elastic where λ̇ reached 0; to plastic where f reached 0 unless the loading is
+            // tangential and turns inwards (then the state stays elastic).
+            problem.plastic = !problem.plastic && starts_plastic(model, leg, problem.part, stress_of(y), y[kPc],
+                                                                 std::numeric_limits<double>::infinity());
+          }
+          directions[0] = problem.plastic ? -1 : 1;
           check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
-          check(CVodeSetRootDirection(s.memory, &direction), "CVodeSetRootDirection", problem);
+          check(CVodeSetRootDirection(s.memory, directions), "CVodeSetRootDirection", problem);
         }
         PointSample sample;
         sample.strain = strain_from_voigt(Eigen::Map<const Vec6>(y + kStrain));
