@@ -178,7 +178,7 @@ std::vector<StressTestMaterial> stress_test_materials() {
   mcc.young_modulus = 1.0e6, mcc.elastic_pressure_floor = 1.0e3;
   ModifiedCamClay::Params mcc_constant = mcc;
   mcc_constant.elasticity = Elasticity::Kind::Constant;
-  ModifiedCamClay::Params mcc_bounded = mcc_constant;  // the SPH scene's soil: softening stops at 100 Pa
+  ModifiedCamClay::Params mcc_bounded = mcc_constant;  // softening stops at 100 Pa, above the walk's dust states
   mcc_bounded.minimum_preconsolidation = 100.0;
   MohrCoulomb::Params mc{};  // the Table 1 soil's E, ν, φ
   mc.density = 2000.0, mc.young_modulus = 1.0e6, mc.poisson_ratio = 0.3, mc.friction_angle = 35.0;

@@ -90,8 +90,8 @@ TEST_CASE("MCC softening bound: p_c never below it, compaction still hardens fro
   CHECK_THROWS_WITH(ModifiedCamClay(negative), Catch::Contains("minimum_preconsolidation"));
   // The initial p_c of a nearly stress-free state is the bound.
   CHECK(mcc.initial_preconsolidation(isotropic_stress(10.0), 1.0) == 1e3);
-  // Elastic unloading inside the bound's surface, then a dust-like return: a state at p_c = bound
-  // sheared at low pressure returns to the bound's ellipse, not below it, for every scheme.
+  // A dust-like state (p = 100 Pa on the loosest surface, p_c = 1 kPa) sheared far past yield returns
+  // to the bound's ellipse, not below it, for every scheme.
   for (Integrator integrator : {Integrator::Explicit, Integrator::Substep, Integrator::Implicit}) {
     p.integrator = integrator;
     const ModifiedCamClay model(p);
