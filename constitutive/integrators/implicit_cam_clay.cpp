@@ -186,7 +186,7 @@ class CamClayReturn {
     // Eq 27 exact over the increment, softening no further than p_c,min (ModifiedCamClay::hardened):
     // p_c(v) is continuous and non-decreasing, flat below the bound.
     x.pc = model_.hardened(pc_n_, v);
-    x.theta = x.pc > std::min(pc_n_, model_.minimum_preconsolidation()) ? theta_ : 0.0;
+    x.theta = model_.hardening_exponent_at(x.pc, v);
     x.Kt = step.tangent.K;
     x.G = step.secant.G;
     // G and p are both functions of the elastic volume alone, so dG/dp = (dG/dε_v^e)/K_t.
