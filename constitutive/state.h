@@ -11,6 +11,10 @@ struct State {
   double pc = 0.0;             ///< preconsolidation pressure p_c (the paper's p0), compression-positive (Pa)
   double plastic_shear_strain = 0.0;  ///< accumulated equivalent plastic strain ∫ sqrt(2/3 dε^p:dε^p)
   double plastic_multiplier = 0.0;    ///< Δλ of the last update (≥ 0), a diagnostic
+  /// Accumulated plastic volumetric strain ∫ tr dε^p, expansion-positive: kept by a model with a
+  /// dilatancy cut-off (models/dilatancy_cutoff.h), which stops dilating when it reaches the cut-off;
+  /// 0 for every other model.
+  double plastic_dilation = 0.0;
 };
 
 /// Where an updated state lies among the corners of a model's stress space that integrators find

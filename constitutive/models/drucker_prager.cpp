@@ -52,6 +52,7 @@ DruckerPrager::DruckerPrager(const Params& params)
   // The apex I1 = k_c/α_φ, where tension is cut off (eq 30–31); 3c/tan φ, so a small φ overflows it.
   require_derived(kName, "cohesion", params.cohesion, "the apex's I1 = 3c/tan(phi)", apex_first_invariant(), "Pa",
                   true);
+  build_cutoff(params_);
 }
 
 std::string DruckerPrager::describe_constants() const {
@@ -61,6 +62,7 @@ std::string DruckerPrager::describe_constants() const {
       << "  alpha_phi = " << alpha_phi_ << ", k_c = " << k_c_ << " Pa (eq 19, plane strain)\n"
       << "  alpha_psi = " << alpha_psi_ << " (the plastic potential's I1 coefficient, "
       << plastic_potential_name(params_.plastic_potential) << ")\n";
+  if (limits_dilation()) out << "  dilatancy cut-off: psi = 0 from a plastic volumetric strain of " << dilatancy_cutoff() << "\n";
   return out.str();
 }
 
@@ -112,7 +114,7 @@ Mat6 DruckerPrager::consistent_tangent(const State& state, const Mat3& strain_in
   // first order in the increment: one update for a Newton tangent instead of the 12 of differences.
   if (integrator() == Integrator::Explicit) return finite_difference_tangent(*this, state, strain_increment);
   Mat6 tangent;
-  implicit_update(*this, state, strain_increment, &tangent);
+  implicit_update(flowing_at(state.plastic_dilation), state, strain_increment, &tangent);
   return tangent;
 }
 

@@ -14,6 +14,7 @@
 #include "constitutive/elasticity.h"
 #include "constitutive/failure_line.h"
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/models/dilatancy_cutoff.h"
 #include "constitutive/models/perfect_plasticity.h"
 #include "constitutive/parameters.h"
 #include "constitutive/state.h"
@@ -46,7 +47,7 @@ struct DruckerPragerParams : FrictionalParams {
   void fields(const Io& io);
 };
 
-class DruckerPrager : public PerfectPlasticity {
+class DruckerPrager : public PerfectPlasticity, public DilatancyCutoff<DruckerPrager> {
  public:
   using Params = DruckerPragerParams;
   static constexpr std::string_view kName = "drucker-prager";

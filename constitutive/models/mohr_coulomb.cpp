@@ -47,6 +47,7 @@ MohrCoulomb::MohrCoulomb(const Params& params)
   // The apex c cot(phi), where the pyramid closes; a small φ overflows it.
   require_derived(kName, "cohesion", params.cohesion, "the apex's principal stress c cot(phi)", apex_stress(), "Pa",
                   true);
+  build_cutoff(params_);
 }
 
 std::string MohrCoulomb::describe_constants() const {
@@ -57,6 +58,7 @@ std::string MohrCoulomb::describe_constants() const {
       << " Pa\n"
       << "  apex = c cot(phi) = " << apex_stress() << " Pa (tension-positive)";
   if (has_tension_cutoff()) out << ", tension cut-off " << tension_cutoff() << " Pa";
+  if (limits_dilation()) out << "\n  dilatancy cut-off: psi = 0 from a plastic volumetric strain of " << dilatancy_cutoff();
   out << "\n  triaxial peak q: compression 2(c cos(phi) + s_r sin(phi))/(1 - sin(phi)), extension /(1 + sin(phi))\n";
   return out.str();
 }
@@ -118,7 +120,7 @@ State MohrCoulomb::update(const State& state, const Mat3& strain_increment, cons
 Mat6 MohrCoulomb::consistent_tangent(const State& state, const Mat3& strain_increment) const {
   if (integrator() != Integrator::Implicit) return finite_difference_tangent(*this, state, strain_increment);
   Mat6 tangent;
-  implicit_update(*this, state, strain_increment, &tangent);
+  implicit_update(flowing_at(state.plastic_dilation), state, strain_increment, &tangent);
   return tangent;
 }
 

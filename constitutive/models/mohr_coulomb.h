@@ -16,6 +16,7 @@
 #include "constitutive/elasticity.h"
 #include "constitutive/failure_line.h"
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/models/dilatancy_cutoff.h"
 #include "constitutive/models/perfect_plasticity.h"
 #include "constitutive/parameters.h"
 #include "constitutive/state.h"
@@ -51,7 +52,7 @@ struct Principal {
 /// The spectral decomposition of a symmetric tensor, eigenvalues in descending order.
 Principal principal(const Mat3& sigma);
 
-class MohrCoulomb : public PerfectPlasticity {
+class MohrCoulomb : public PerfectPlasticity, public DilatancyCutoff<MohrCoulomb> {
  public:
   using Params = MohrCoulombParams;
   static constexpr std::string_view kName = "mohr-coulomb";

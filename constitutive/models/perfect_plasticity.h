@@ -4,6 +4,8 @@
 /// once: p_c stays 0 (an OCR has nothing to set), and, for a perfectly plastic model, no hardening
 /// term, no hardening rate for the CVODE reference, and the apex as its stress-test mark. Models
 /// inherit them as plain members (no virtual functions), and the keys the frictional models share.
+#include <limits>
+
 #include "constitutive/material_limits.h"
 #include "constitutive/parameters.h"
 #include "constitutive/state.h"
@@ -37,10 +39,13 @@ struct FrictionalParams {
   double friction_angle = 0.0;   ///< φ, degrees (required)
   double cohesion = 0.0;         ///< c, Pa
   double dilatancy_angle = 0.0;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
+  /// Plastic volumetric strain at which dilation stops (ψ → 0; models/dilatancy_cutoff.h), +∞: none.
+  double dilatancy_cutoff = std::numeric_limits<double>::infinity();
 };
 
 /// Their keys, ranges and defaults, for Params::fields: density, E, ν, φ, c (default 0), ψ (default
-/// 0, at most φ).
+/// 0, at most φ), the dilatancy cut-off (default none; a plastic volumetric strain up to 1, e^1 times
+/// the volume, far beyond any soil's).
 template <class Io>
 void frictional_fields(const Io& io, FrictionalParams& p) {
   io.number("density", p.density, Range::positive(), "kg/m^3");
@@ -49,6 +54,7 @@ void frictional_fields(const Io& io, FrictionalParams& p) {
   io.number("friction_angle", p.friction_angle, Range::open(0.0, 90.0), "degrees");
   io.number_or("cohesion", p.cohesion, Range::closed(0.0, limits::kMaxStress), "Pa");
   io.number_or("dilatancy_angle", p.dilatancy_angle, Range::closed(0.0, p.friction_angle), "degrees");
+  io.number_if_given("dilatancy_cutoff", p.dilatancy_cutoff, Range::open_closed(0.0, 1.0));
 }
 
 }  // namespace soilsph

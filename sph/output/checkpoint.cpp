@@ -13,19 +13,20 @@ namespace soilsph::sph {
 namespace {
 using hdf5::Handle;
 
-/// Format 2 dropped format 1's accumulated plastic strain tensor (no longer part of State).
-constexpr const char* kFormat = "soilsph checkpoint 2";
-constexpr std::size_t kStateValues = 12;  ///< per soil particle: σ (9), p_c, ε^p_s, Δλ
+/// Format 2 dropped format 1's accumulated plastic strain tensor (no longer part of State); format 3
+/// added the plastic dilation (the dilatancy cut-off's state).
+constexpr const char* kFormat = "soilsph checkpoint 3";
+constexpr std::size_t kStateValues = 13;  ///< per soil particle: σ (9), p_c, ε^p_s, Δλ, ε^p_v
 
 void pack(const State& s, double* out) {
   for (int k = 0; k < 9; ++k) out[k] = s.stress(k / 3, k % 3);
-  out[9] = s.pc, out[10] = s.plastic_shear_strain, out[11] = s.plastic_multiplier;
+  out[9] = s.pc, out[10] = s.plastic_shear_strain, out[11] = s.plastic_multiplier, out[12] = s.plastic_dilation;
 }
 
 State unpack(const double* in) {
   State s;
   for (int k = 0; k < 9; ++k) s.stress(k / 3, k % 3) = in[k];
-  s.pc = in[9], s.plastic_shear_strain = in[10], s.plastic_multiplier = in[11];
+  s.pc = in[9], s.plastic_shear_strain = in[10], s.plastic_multiplier = in[11], s.plastic_dilation = in[12];
   return s;
 }
 

@@ -18,11 +18,23 @@ namespace soilsph::verification {
 
 namespace {
 
-/// The ODE state: stress (Voigt, 6), total strain (Voigt, engineering shears, 6), p_c, pore pressure.
+/// The ODE state: stress (Voigt, 6), total strain (Voigt, engineering shears, 6), p_c, pore pressure
+/// and, for a model with a dilatancy cut-off only (so that every other model's ODE is unchanged), the
+/// plastic dilation.
 constexpr int kSize = 14;
 constexpr int kStrain = 6;
 constexpr int kPc = 12;
 constexpr int kPorePressure = 13;
+constexpr int kDilation = 14;
+template <class Model>
+int ode_size(const Model& model) {
+  return limits_dilation(model) ? kSize + 1 : kSize;
+}
+/// The plastic dilation of the ODE state y (0 where it has no such component).
+template <class Model>
+double dilation_of(const Model& model, const double* y) {
+  return limits_dilation(model) ? y[kDilation] : 0.0;
+}
 /// Output intervals (in increments) shorter than this are bridged without CVODE.
 constexpr double kTooClose = 1e-9;
 
@@ -35,13 +47,17 @@ struct Rates {
   Vec6 strain = Vec6::Zero();
   double pc = 0.0;
   double pore_pressure = 0.0;       ///< u̇, 0 on a drained leg
+  double dilation = 0.0;            ///< λ̇ tr n_g, the plastic dilation's rate
   double plastic_multiplier = 0.0;  ///< λ̇, 0 on the elastic branch
   bool defined = true;              ///< false where n_f:D:n_g + H ≤ 0: no plastic solution
 };
 
+/// The rates at (σ, p_c) with plastic dilation d: the model that flows there (ψ = 0 past a dilatancy
+/// cut-off) gives them.
 template <class Model>
-Rates rates(const Model& model, const Leg& leg, const Partition& part, const Vec6& stress, double pc,
+Rates rates(const Model& given, const Leg& leg, const Partition& part, const Vec6& stress, double pc, double d,
             bool plastic) {
+  const Model& model = flowing_model(given, d);
   const Mat3 sigma = stress_from_voigt(stress);
   const Moduli D = model.elasticity().at(mean_pressure(sigma));
   Mat6 C = voigt_stiffness(D);
@@ -71,6 +87,7 @@ Rates rates(const Model& model, const Leg& leg, const Partition& part, const Vec
     if (plastic) {
       r.plastic_multiplier = b.dot(r.strain) / denominator;
       r.pc = model.hardening_rate(sigma, pc, r.plastic_multiplier, n_g);  // MCC: eq 27 in rate form
+      r.dilation = r.plastic_multiplier * n_g.trace();
     }
   }
   return r;
@@ -94,7 +111,8 @@ template <class Model>
 int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   auto& problem = *static_cast<Problem<Model>*>(data);
   const double* v = N_VGetArrayPointer(y);
-  const Rates r = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc], problem.plastic);
+  const Rates r = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc],
+                        dilation_of(*problem.model, v), problem.plastic);
   if (!r.defined) {
     problem.last_error =
         "the plastic modulus n_f:D:n_g + H is not positive, so plastic loading has no continuum solution "
@@ -107,7 +125,17 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   Eigen::Map<Vec6>{d + kStrain} = r.strain;
   d[kPc] = r.pc;
   d[kPorePressure] = r.pore_pressure;
+  if (limits_dilation(*problem.model)) d[kDilation] = r.dilation;
   return r.stress.allFinite() && std::isfinite(r.pc) ? 0 : 1;  // 1: recoverable, CVODE cuts the step
+}
+
+/// The plastic dilation at which the model stops dilating (+∞: none).
+template <class Model>
+double cutoff_of(const Model& model) {
+  if constexpr (requires { model.dilatancy_cutoff(); })
+    return model.dilatancy_cutoff();
+  else
+    return std::numeric_limits<double>::infinity();
 }
 
 /// The smallest p_c the model's softening reaches (MCC's minimum_preconsolidation), 0 for none.
@@ -122,14 +150,17 @@ double softening_bound(const Model& model) {
 /// g[0], elastic branch: the yield function (its crossing of 0 upwards is first yield); plastic
 /// branch: λ̇ (its crossing of 0 downwards is elastic unloading). g[1]: p_c − p_c,min, whose crossing
 /// downwards is where softening stops (the rate ṗ_c jumps from θ p_c,min ε̇_v^p to 0 there, a kink no
-/// step may straddle); constant where the model has no bound.
+/// step may straddle); constant where the model has no bound. g[2]: cut-off − plastic dilation, whose
+/// crossing downwards is where dilation stops (ψ jumps to 0); constant without a cut-off.
 template <class Model>
 int switching_function(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
   auto& problem = *static_cast<Problem<Model>*>(data);
   const double* v = N_VGetArrayPointer(y);
   if constexpr (kPlastic<Model>) {
     if (problem.plastic) {
-      g[0] = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc], true).plastic_multiplier;
+      g[0] = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc], dilation_of(*problem.model, v),
+                   true)
+                 .plastic_multiplier;
     } else {
       g[0] = problem.model->normalized_yield(stress_from_voigt(stress_of(v)), v[kPc]);
     }
@@ -138,6 +169,7 @@ int switching_function(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
   }
   const double bound = softening_bound(*problem.model);
   g[1] = bound > 0.0 ? v[kPc] - bound : 1.0;
+  g[2] = limits_dilation(*problem.model) ? cutoff_of(*problem.model) - v[kDilation] : 1.0;
   return 0;
 }
 
@@ -189,7 +221,7 @@ bool starts_plastic(const Model& model, const Leg& leg, const Partition& part, c
     const Mat3 sigma = stress_from_voigt(stress);
     if (model.normalized_yield(sigma, pc) < -surface_tolerance) return false;
     constexpr double kProbe = 1e-3;
-    const Vec6 trial = stress + kProbe * rates(model, leg, part, stress, pc, false).stress;
+    const Vec6 trial = stress + kProbe * rates(model, leg, part, stress, pc, 0.0, false).stress;
     return model.yield(stress_from_voigt(trial), pc) > model.yield(sigma, pc);
   }
   return false;
@@ -203,19 +235,21 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   Problem<Model> problem{&model, &legs[0], Partition(legs[0]), false, {}};
   Solver s;
   if (SUNContext_Create(nullptr, &s.context) != 0) throw std::runtime_error("cvode reference: no SUNContext");
-  s.y = N_VNew_Serial(kSize, s.context);
-  s.tolerances = N_VNew_Serial(kSize, s.context);
-  s.rates = N_VNew_Serial(kSize, s.context);
+  const int size = ode_size(model);
+  s.y = N_VNew_Serial(size, s.context);
+  s.tolerances = N_VNew_Serial(size, s.context);
+  s.rates = N_VNew_Serial(size, s.context);
   double* y = N_VGetArrayPointer(s.y);
   Eigen::Map<Vec6>{y} = stress_to_voigt(initial.stress);
   Eigen::Map<Vec6>{y + kStrain}.setZero();
   y[kPc] = initial.pc;
   y[kPorePressure] = 0.0;
+  if (limits_dilation(model)) y[kDilation] = initial.plastic_dilation;
   // Absolute tolerances scaled to the stress level of the test.
   const double stress_scale = std::max({initial.stress.cwiseAbs().maxCoeff(), initial.pc, 1.0});
   double* atol = N_VGetArrayPointer(s.tolerances);
-  for (int k = 0; k < kSize; ++k)
-    atol[k] = options.absolute_tolerance * (k < kStrain || k >= kPc ? stress_scale : 1.0);
+  for (int k = 0; k < size; ++k)
+    atol[k] = options.absolute_tolerance * ((k < kStrain || k >= kPc) && k != kDilation ? stress_scale : 1.0);
 
   s.memory = CVodeCreate(CV_BDF, s.context);
   if (!s.memory) throw std::runtime_error("cvode reference: CVodeCreate failed");
@@ -223,11 +257,11 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   check(CVodeInit(s.memory, right_hand_side<Model>, 0.0, s.y), "CVodeInit", problem);
   check(CVodeSetUserData(s.memory, &problem), "CVodeSetUserData", problem);
   check(CVodeSVtolerances(s.memory, options.relative_tolerance, s.tolerances), "CVodeSVtolerances", problem);
-  s.matrix = SUNDenseMatrix(kSize, kSize, s.context);
+  s.matrix = SUNDenseMatrix(size, size, s.context);
   s.linear_solver = SUNLinSol_Dense(s.y, s.matrix, s.context);
   check(CVodeSetLinearSolver(s.memory, s.linear_solver, s.matrix), "CVodeSetLinearSolver", problem);
   check(CVodeSetMaxNumSteps(s.memory, options.max_steps_per_increment), "CVodeSetMaxNumSteps", problem);
-  check(CVodeRootInit(s.memory, 2, switching_function<Model>), "CVodeRootInit", problem);
+  check(CVodeRootInit(s.memory, 3, switching_function<Model>), "CVodeRootInit", problem);
   check(CVodeSetNoInactiveRootWarn(s.memory), "CVodeSetNoInactiveRootWarn", problem);
 
   std::size_t leg_index = 0;
@@ -242,7 +276,7 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
       problem.plastic =
           starts_plastic(model, leg, problem.part, stress_of(y), y[kPc], options.surface_tolerance);
       check(CVodeReInit(s.memory, 0.0, s.y), "CVodeReInit", problem);
-      int directions[2] = {problem.plastic ? -1 : 1, -1};
+      int directions[3] = {problem.plastic ? -1 : 1, -1, -1};
       check(CVodeSetRootDirection(s.memory, directions), "CVodeSetRootDirection", problem);
       sunrealtype t = 0.0;
       for (int k = 1; k <= leg.increments; ++k) {
@@ -264,11 +298,14 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
           if (flag != CV_ROOT_RETURN) break;
           if (switches > 100)
             throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
-          int found[2] = {0, 0};
+          int found[3] = {0, 0, 0};
           check(CVodeGetRootInfo(s.memory, found), "CVodeGetRootInfo", problem);
           if (found[1] != 0) {
             // Softening reached the bound: p_c onto it exactly, where the model's rate is 0, and on.
             y[kPc] = softening_bound(model);
+          } else if (found[2] != 0) {
+            // Dilation reached the cut-off: onto it exactly, where the ψ = 0 twin flows on.
+            y[kDilation] = cutoff_of(model);
           } else {
             // Switch branch at the root and restart there, so no step straddles the kink: to
             // elastic where λ̇ reached 0; to plastic where f reached 0 unless the loading is
@@ -284,6 +321,7 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
         sample.strain = strain_from_voigt(Eigen::Map<const Vec6>(y + kStrain));
         sample.state.stress = stress_from_voigt(stress_of(y));
         sample.state.pc = y[kPc];
+        sample.state.plastic_dilation = dilation_of(model, y);
         sample.pore_pressure = y[kPorePressure];
         history.push_back(sample);
         increment = k;
