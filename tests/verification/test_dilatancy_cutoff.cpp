@@ -48,7 +48,7 @@ PointTest triaxial(LoadPath path, double target, int increments) {
   return t;
 }
 
-/// Integrators errors against CVODE's (its case tolerance against closed forms, as elsewhere).
+/// The integrators' bound, and CVODE's (its case tolerance against closed forms, as elsewhere).
 double tolerance(const std::string& integrator) { return integrator == "cvode" ? 1e-6 : 1e-9; }
 
 /// The drained curve against the closed form with the cut-off; `peak_strain` from the closed form.
