@@ -221,6 +221,7 @@ bool starts_plastic(const Model& model, const Leg& leg, const Partition& part, c
     const Mat3 sigma = stress_from_voigt(stress);
     if (model.normalized_yield(sigma, pc) < -surface_tolerance) return false;
     constexpr double kProbe = 1e-3;
+    // Elastic rates: the same for the model and its ψ = 0 twin, so the dilation does not matter.
     const Vec6 trial = stress + kProbe * rates(model, leg, part, stress, pc, 0.0, false).stress;
     return model.yield(stress_from_voigt(trial), pc) > model.yield(sigma, pc);
   }
