@@ -1,6 +1,7 @@
 #include "constitutive/integrators/implicit_mohr_coulomb.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>  // the static lists of active sets only
@@ -36,10 +37,15 @@ struct ActiveSet {
 const std::vector<ActiveSet>& active_sets(bool cutoff) {
   static const std::vector<ActiveSet> plain = {
       {Kind::Plane, {0}}, {Kind::RightEdge, {0, 1}}, {Kind::LeftEdge, {0, 2}}};
+  // The corner where the right edge meets the cut-off, σ1 = σ2 = T on the pyramid, lies on four
+  // planes (0, 1, 3, 4): its cone of flow directions is the union of those of the four triples
+  // (Carathéodory in three dimensions), so each triple is a set of its own. Triaxial compression
+  // at low confinement ends there (σ'_r = −T, σ'_a on the failure line).
   static const std::vector<ActiveSet> with_cutoff = {
       {Kind::Plane, {0}},          {Kind::RightEdge, {0, 1}},     {Kind::LeftEdge, {0, 2}},
       {Kind::Cutoff, {3}},         {Kind::Cutoff, {0, 3}},        {Kind::Cutoff, {0, 2, 3}},
-      {Kind::Cutoff, {3, 4}},      {Kind::Cutoff, {0, 3, 4}},     {Kind::Cutoff, {3, 4, 5}}};
+      {Kind::Cutoff, {3, 4}},      {Kind::Cutoff, {0, 3, 4}},     {Kind::Cutoff, {0, 1, 3}},
+      {Kind::Cutoff, {0, 1, 4}},   {Kind::Cutoff, {1, 3, 4}},     {Kind::Cutoff, {3, 4, 5}}};
   return cutoff ? with_cutoff : plain;
 }
 
@@ -86,10 +92,13 @@ MohrCoulombReturn return_principal(const MohrCoulomb& model, const Vec3& trial, 
     if (!inside) continue;
     r.kind = set.kind;
     r.stress = sigma;
-    // Equal stresses of an edge or corner exactly equal (so s = 0 at a corner is exact).
-    if (set.kind == Kind::RightEdge) r.stress(0) = r.stress(1) = 0.5 * (sigma(0) + sigma(1));
-    if (set.kind == Kind::LeftEdge) r.stress(1) = r.stress(2) = 0.5 * (sigma(1) + sigma(2));
-    if (set.planes.size() == 3 && set.planes[0] == 3) r.stress.setConstant(model.tension_cutoff());
+    // Equal stresses of an edge or corner exactly equal, and those on a cut-off exactly T (so s = 0
+    // at a corner is exact).
+    const auto has = [&](int plane) { return std::find(set.planes.begin(), set.planes.end(), plane) != set.planes.end(); };
+    if (has(1)) r.stress(0) = r.stress(1) = has(3) || has(4) ? model.tension_cutoff() : 0.5 * (sigma(0) + sigma(1));
+    if (has(2)) r.stress(1) = r.stress(2) = 0.5 * (sigma(1) + sigma(2));
+    for (int k = 3; k < 6; ++k)
+      if (has(k)) r.stress(k - 3) = model.tension_cutoff();
     r.multiplier = d_gamma.sum();
     r.jacobian = Mat3::Identity() - DG * lu.solve(Square(N.transpose()));
     r.plastic_strain = Dp.inverse() * (trial - r.stress);

@@ -10,7 +10,8 @@
 /// with D = (K − 2G/3) 1⊗1 + 2G I the principal stiffness. The sets are tried in order: the main
 /// plane f1 = (σ1 − σ3) + (σ1 + σ3) sinφ − 2c cosφ; the right edge σ1 = σ2 (f1 and f2, the plane with
 /// σ2 for σ1: triaxial compression); the left edge σ2 = σ3 (f1 and f3, σ2 for σ3: triaxial
-/// extension); with a cut-off T, the planes σ_i = T alone and with f1 (and f3); finally the apex
+/// extension); with a cut-off T, the planes σ_i = T alone and with f1 (and f3), and the corner
+/// σ1 = σ2 = T on f1 and f2 as each of its four triples of planes; finally the apex
 /// σ1 = σ2 = σ3 = c cotφ (or the cut-off's corner σ_i = T). The first set whose multipliers are ≥ 0,
 /// whose stresses keep their order and lie on or inside every plane is the return: for one active
 /// plane Δγ = f_tr/(a·D·g), as Box 8.5; docs/derivations.md derives the edges and the apex.

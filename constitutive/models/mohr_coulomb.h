@@ -99,9 +99,9 @@ class MohrCoulomb : public PerfectPlasticity, public DilatancyCutoff<MohrCoulomb
   }
 
   State update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const;
-  /// ∂σ/∂Δε of update() without spin: the analytic consistent tangent for `implicit`; central
-  /// differences of the update for `explicit` and `substep` (substep's stages do not follow an edge
-  /// as the return does, and the implicit tangent there stalled the undrained extension's Newton).
+  /// ∂σ/∂Δε of update() without spin: the analytic consistent tangent of the implicit return for
+  /// `implicit` and `substep` (the same stress map for this piecewise-linear model); central
+  /// differences of the update for `explicit`.
   Mat6 consistent_tangent(const State& state, const Mat3& strain_increment) const;
 
  private:

@@ -123,6 +123,32 @@ TEST_CASE("Mohr-Coulomb: the return lands on the plane, the edges, the apex or t
     const MohrCoulombReturn corner = return_principal(cut, Vec3::Constant(10e3), D);
     CHECK(corner.stress == Vec3::Constant(2e3));
   }
+  SECTION("where the compression edge meets the cut-off: sigma1 = sigma2 = T on the pyramid") {
+    // Four planes meet at P = (T, T, σ3) with (1 + sinφ) T − (1 − sinφ) σ3 = 2c cosφ: the pyramid's
+    // two with σ3 and the cut-offs of σ1 and σ2. A trial P + D(λ0 g0 + λ1 g1 + λ3 e1 + λ4 e2) with
+    // λ ≥ 0 and their flow directions g0 = (1+sinψ, 0, −(1−sinψ)), g1 = (0, 1+sinψ, −(1−sinψ))
+    // returns to P (its conditions hold by construction). Triaxial compression at low confinement
+    // ends there; before the corner's four triples were sets, such trials fell to the cut-off's apex.
+    const double T = 0.0;
+    const MohrCoulomb cut(params(T));
+    const Vec3 P(T, T, ((1.0 + s) * T - 2.0 * kCohesion * cosd(kPhi)) / (1.0 - s));
+    const Vec3 g0(1.0 + t, 0.0, -(1.0 - t)), g1(0.0, 1.0 + t, -(1.0 - t));
+    const Mat3 Dp = (D.K - 2.0 * D.G / 3.0) * Mat3::Ones() + 2.0 * D.G * Mat3::Identity();
+    for (const Eigen::Vector4d& weights : {Eigen::Vector4d(1e-3, 1e-3, 1e-3, 1e-3), Eigen::Vector4d(0.0, 1e-3, 2e-3, 0.0),
+                                Eigen::Vector4d(1e-3, 0.0, 0.0, 1e-3),
+                                Eigen::Vector4d(2e-3, 1e-3, 1e-3, 0.0), Eigen::Vector4d(0.0, 0.0, 1e-3, 1e-3)}) {
+      const Vec3 trial = P + Dp * (weights(0) * g0 + weights(1) * g1 + weights(2) * Vec3::UnitX() +
+                                   weights(3) * Vec3::UnitY());
+      INFO("weights " << weights.transpose() << ", trial " << trial.transpose());
+      REQUIRE(trial(0) >= trial(1));
+      REQUIRE(trial(1) >= trial(2));
+      const MohrCoulombReturn r = return_principal(cut, trial, D);
+      CHECK(r.kind == Kind::Cutoff);
+      CHECK(r.stress(0) == T);
+      CHECK(r.stress(1) == T);
+      CHECK(r.stress(2) == Approx(P(2)));
+    }
+  }
 }
 
 TEST_CASE("Mohr-Coulomb: the implicit update's consistent tangent equals central differences",

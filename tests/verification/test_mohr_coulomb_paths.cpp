@@ -97,3 +97,68 @@ TEST_CASE("Mohr-Coulomb: undrained, p' climbs the failure line with psi > 0 and 
   CHECK(plain.at(0.5).p == 100e3);
   CHECK(plain.at(0.5).q == Approx(plain.yield_q(+1)));
 }
+
+// A stiff soil reaches the pyramid's edge within one increment; there the two imposed lateral
+// stresses are one equation (σ_yy = σ_zz whatever the split of ε_yy, ε_zz), the driver's Newton
+// system is singular, and before the least-norm solve (mixed_control_algebra.h) implicit, explicit
+// and substep failed on these paths.
+TEST_CASE("Mohr-Coulomb: on a stiff soil every integrator follows the closed forms along the edge",
+          "[mohr-coulomb][closed-form][mixed-control]") {
+  struct Case {
+    LoadPath path;
+    double target;
+    const char* closed_form;
+  };
+  for (double psi : {0.0, kPsi})
+    for (double cohesion : {0.0, kCohesion}) {
+      MohrCoulomb::Params p = model().params();
+      p.young_modulus = 100e6, p.dilatancy_angle = psi, p.cohesion = cohesion;
+      const Material mc = MohrCoulomb(p);
+      for (const Case& c : {Case{LoadPath::TriaxialDrained, 0.3, "mc-triaxial-drained"},
+                            Case{LoadPath::TriaxialDrained, -0.2, "mc-triaxial-drained"},
+                            Case{LoadPath::TriaxialUndrained, 0.3, "mc-triaxial-undrained"},
+                            Case{LoadPath::TriaxialUndrained, -0.2, "mc-triaxial-undrained"}}) {
+        PointTest test = triaxial(c.path, c.target);
+        test.increments = 100;
+        for (const char* integrator : {"explicit", "substep", "implicit"}) {
+          INFO(load_path_name(c.path) << " to eps_a = " << c.target << ", psi = " << psi << ", c = " << cohesion
+                                      << ", " << integrator);
+          const PointCurve curve = run_point_test(mc, test, integrator);
+          std::vector<double> driven;
+          for (const PointRecord& row : curve) driven.push_back(row.eps_a);
+          CHECK(curve_errors(curve, closed_form_curve(c.closed_form, mc, test, driven), c.path).max() < 1e-8);
+        }
+      }
+    }
+}
+
+// Undrained compression at 1 kPa confinement with cohesion and a tension cut-off T = 0: with ψ = 0,
+// p' stays at p_i until σ'_r reaches −T (at q = 3 p_i), then σ'_r = −T while σ'_a rises to the pyramid,
+// where the compression edge meets the cut-off: σ'_a = (2c cosφ − (1 + sinφ) T)/(1 − sinφ), held from
+// there (the flow of the two pyramid planes is isochoric). The total radial stress p_i = σ'_r + u
+// gives u = p_i + T. (Before the corner's four-plane sets the return fell to σ' = 0.)
+TEST_CASE("Mohr-Coulomb: undrained at low confinement, the stress ends where the edge meets the cut-off",
+          "[mohr-coulomb][closed-form][mixed-control]") {
+  constexpr double kConfinement = 1e3, kCutoff = 0.0;
+  MohrCoulomb::Params p = model().params();
+  p.dilatancy_angle = 0.0, p.tension_cutoff = kCutoff;
+  const Material mc = MohrCoulomb(p);
+  const double s = sind(kPhi), axial = (2.0 * kCohesion * cosd(kPhi) - (1.0 + s) * kCutoff) / (1.0 - s);
+  PointTest test = triaxial(LoadPath::TriaxialUndrained, 0.3);
+  test.p_initial = kConfinement;
+  struct Run {
+    const char* integrator;
+    int increments;
+    double tolerance;  // relative, on σ'_a
+  };
+  // explicit is first order through the kink where the cut-off meets the pyramid (2.6 % off at 100).
+  for (const Run& run : {Run{"implicit", 100, 1e-9}, Run{"substep", 100, 1e-6}, Run{"explicit", 1000, 1e-2}}) {
+    INFO(run.integrator << ", " << run.increments << " increments");
+    test.increments = run.increments;
+    const PointRecord end = run_point_test(mc, test, run.integrator).back();
+    CHECK(end.sig_a == Approx(axial).epsilon(run.tolerance));
+    CHECK(end.sig_r == Approx(-kCutoff).margin(run.tolerance * axial));
+    CHECK(end.u == Approx(kConfinement + kCutoff).epsilon(run.tolerance * axial / kConfinement));
+    CHECK(end.eps_v == Approx(0.0).margin(1e-12));
+  }
+}
