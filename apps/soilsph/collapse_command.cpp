@@ -12,6 +12,7 @@
 #include "apps/soilsph/commands.h"
 #include "apps/soilsph/stop_signal.h"
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/models/loosening.h"
 #include "soilsph/version.h"
 #include "sph/collapse.h"
 #include "sph/diagnostics.h"
@@ -270,14 +271,13 @@ void run_collapse(const CollapseOptions& o) {
                    "docs/sph.md \"The loosest state\"";
     std::cerr << ")\n";
   }
-  // A constant ψ dilates without bound: its toe loosens and jostles after the rest has stopped.
-  const bool unbounded_dilation = std::ranges::any_of(scene.materials, [](const Material& m) {
-    return std::visit([](const auto& model) { return dilates_without_bound(model); }, m);
-  });
-  if (scene.rest.enabled && !stats.stopped_at_rest && stats.stop == StopReason::EndTime && unbounded_dilation)
-    std::cerr << "warning: the soil did not come to rest; its dilatancy_angle > 0 without a [material] "
-                 "dilatancy_cutoff dilates without bound as it shears (set one such as 0.05, docs/sph.md "
-                 "\"Dilatant soil\")\n";
+  // A soil that loosens without bound (constitutive/models/loosening.h) jostles or scatters after the
+  // rest has stopped: say why when the run did not rest.
+  if (scene.rest.enabled && !stats.stopped_at_rest && stats.stop == StopReason::EndTime)
+    for (const Material& material : scene.materials)
+      if (const std::string why = std::visit([](const auto& model) { return unbounded_loosening(model); }, material);
+          !why.empty())
+        std::cerr << "warning: the soil did not come to rest; " << why << '\n';
   if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
   std::cout << "runout " << summary.runout_m << " m (" << summary.runout_thick_m << " m where H0/10 thick), height "
             << summary.height_m << " m, repose angle " << summary.repose_angle_deg << " deg, max speed at end "
