@@ -275,7 +275,8 @@ void run_collapse(const CollapseOptions& o) {
   // rest has stopped: say why when the run did not rest.
   if (scene.rest.enabled && !stats.stopped_at_rest && stats.stop == StopReason::EndTime)
     for (const Material& material : scene.materials)
-      if (const std::string why = std::visit([](const auto& model) { return unbounded_loosening(model); }, material);
+      if (const std::string why =
+              std::visit([](const auto& model) { return unbounded_loosening(model); }, material);
           !why.empty())
         std::cerr << "warning: the soil did not come to rest; " << why << '\n';
   if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";

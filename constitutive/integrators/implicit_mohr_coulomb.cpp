@@ -42,10 +42,10 @@ const std::vector<ActiveSet>& active_sets(bool cutoff) {
   // (Carathéodory in three dimensions), so each triple is a set of its own. Triaxial compression
   // at low confinement ends there (σ'_r = −T, σ'_a on the failure line).
   static const std::vector<ActiveSet> with_cutoff = {
-      {Kind::Plane, {0}},          {Kind::RightEdge, {0, 1}},     {Kind::LeftEdge, {0, 2}},
-      {Kind::Cutoff, {3}},         {Kind::Cutoff, {0, 3}},        {Kind::Cutoff, {0, 2, 3}},
-      {Kind::Cutoff, {3, 4}},      {Kind::Cutoff, {0, 3, 4}},     {Kind::Cutoff, {0, 1, 3}},
-      {Kind::Cutoff, {0, 1, 4}},   {Kind::Cutoff, {1, 3, 4}},     {Kind::Cutoff, {3, 4, 5}}};
+      {Kind::Plane, {0}},        {Kind::RightEdge, {0, 1}}, {Kind::LeftEdge, {0, 2}},
+      {Kind::Cutoff, {3}},       {Kind::Cutoff, {0, 3}},    {Kind::Cutoff, {0, 2, 3}},
+      {Kind::Cutoff, {3, 4}},    {Kind::Cutoff, {0, 3, 4}}, {Kind::Cutoff, {0, 1, 3}},
+      {Kind::Cutoff, {0, 1, 4}}, {Kind::Cutoff, {1, 3, 4}}, {Kind::Cutoff, {3, 4, 5}}};
   return cutoff ? with_cutoff : plain;
 }
 
@@ -94,8 +94,9 @@ MohrCoulombReturn return_principal(const MohrCoulomb& model, const Vec3& trial, 
     r.stress = sigma;
     // Equal stresses of an edge or corner exactly equal, and those on a cut-off exactly T (so s = 0
     // at a corner is exact).
-    const auto has = [&](int plane) { return std::find(set.planes.begin(), set.planes.end(), plane) != set.planes.end(); };
-    if (has(1)) r.stress(0) = r.stress(1) = has(3) || has(4) ? model.tension_cutoff() : 0.5 * (sigma(0) + sigma(1));
+    const auto has = [&](int plane) { return std::ranges::find(set.planes, plane) != set.planes.end(); };
+    if (has(1))
+      r.stress(0) = r.stress(1) = has(3) || has(4) ? model.tension_cutoff() : 0.5 * (sigma(0) + sigma(1));
     if (has(2)) r.stress(1) = r.stress(2) = 0.5 * (sigma(1) + sigma(2));
     for (int k = 3; k < 6; ++k)
       if (has(k)) r.stress(k - 3) = model.tension_cutoff();

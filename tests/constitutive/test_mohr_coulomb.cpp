@@ -134,9 +134,10 @@ TEST_CASE("Mohr-Coulomb: the return lands on the plane, the edges, the apex or t
     const Vec3 P(T, T, ((1.0 + s) * T - 2.0 * kCohesion * cosd(kPhi)) / (1.0 - s));
     const Vec3 g0(1.0 + t, 0.0, -(1.0 - t)), g1(0.0, 1.0 + t, -(1.0 - t));
     const Mat3 Dp = (D.K - 2.0 * D.G / 3.0) * Mat3::Ones() + 2.0 * D.G * Mat3::Identity();
-    for (const Eigen::Vector4d& weights : {Eigen::Vector4d(1e-3, 1e-3, 1e-3, 1e-3), Eigen::Vector4d(0.0, 1e-3, 2e-3, 0.0),
-                                Eigen::Vector4d(1e-3, 0.0, 0.0, 1e-3),
-                                Eigen::Vector4d(2e-3, 1e-3, 1e-3, 0.0), Eigen::Vector4d(0.0, 0.0, 1e-3, 1e-3)}) {
+    using Weights = Eigen::Vector4d;  // λ0, λ1, λ3, λ4
+    for (const Weights& weights :
+         {Weights(1e-3, 1e-3, 1e-3, 1e-3), Weights(0.0, 1e-3, 2e-3, 0.0), Weights(1e-3, 0.0, 0.0, 1e-3),
+          Weights(2e-3, 1e-3, 1e-3, 0.0), Weights(0.0, 0.0, 1e-3, 1e-3)}) {
       const Vec3 trial = P + Dp * (weights(0) * g0 + weights(1) * g1 + weights(2) * Vec3::UnitX() +
                                    weights(3) * Vec3::UnitY());
       INFO("weights " << weights.transpose() << ", trial " << trial.transpose());

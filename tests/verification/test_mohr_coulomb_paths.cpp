@@ -121,8 +121,8 @@ TEST_CASE("Mohr-Coulomb: on a stiff soil every integrator follows the closed for
         PointTest test = triaxial(c.path, c.target);
         test.increments = 100;
         for (const char* integrator : {"explicit", "substep", "implicit"}) {
-          INFO(load_path_name(c.path) << " to eps_a = " << c.target << ", psi = " << psi << ", c = " << cohesion
-                                      << ", " << integrator);
+          INFO(load_path_name(c.path) << " to eps_a = " << c.target << ", psi = " << psi
+                                      << ", c = " << cohesion << ", " << integrator);
           const PointCurve curve = run_point_test(mc, test, integrator);
           std::vector<double> driven;
           for (const PointRecord& row : curve) driven.push_back(row.eps_a);
@@ -152,7 +152,8 @@ TEST_CASE("Mohr-Coulomb: undrained at low confinement, the stress ends where the
     double tolerance;  // relative, on σ'_a
   };
   // explicit is first order through the kink where the cut-off meets the pyramid (2.6 % off at 100).
-  for (const Run& run : {Run{"implicit", 100, 1e-9}, Run{"substep", 100, 1e-6}, Run{"explicit", 1000, 1e-2}}) {
+  for (const Run& run :
+       {Run{"implicit", 100, 1e-9}, Run{"substep", 100, 1e-6}, Run{"explicit", 1000, 1e-2}}) {
     INFO(run.integrator << ", " << run.increments << " increments");
     test.increments = run.increments;
     const PointRecord end = run_point_test(mc, test, run.integrator).back();

@@ -4,7 +4,6 @@
 /// which components are free, the 6×6 Voigt elastic stiffness, and the solve of the free strain
 /// components from a 6×6 (algorithmic or continuum) tangent.
 #include <Eigen/QR>
-#include <algorithm>
 
 #include "constitutive/elasticity.h"
 #include "constitutive/voigt.h"
@@ -50,7 +49,7 @@ inline Mat6 voigt_stiffness(const Moduli& D) {
 /// depend on ε_yy − ε_zz and two imposed lateral stresses are one equation. The deformation is
 /// then not unique, and the solution taken is the one of least norm (a complete orthogonal
 /// decomposition, rank decided relative to the largest pivot): the Newton correction has no part
-/// in the free direction, which keeps the split of the elastic guess (ε_yy = ε_zz on a triaxial
+/// in the undetermined direction, which keeps the split of the elastic guess (ε_yy = ε_zz on a triaxial
 /// path). For a regular system it is the ordinary solution. The border is scaled by the largest
 /// stiffness so that the rank decision compares like with like.
 inline double solve_free(const Mat6& C, const Partition& part, const Vec6& b, Vec6& x) {
@@ -73,7 +72,8 @@ inline double solve_free(const Mat6& C, const Partition& part, const Vec6& b, Ve
       A(a, part.n_free) = -scale * voigt_identity(part.free[a]);
       A(part.n_free, a) = scale * voigt_identity(part.free[a]);
     }
-    for (int c = 0; c < part.n_fixed; ++c) rhs(part.n_free) -= scale * voigt_identity(part.fixed[c]) * x(part.fixed[c]);
+    for (int c = 0; c < part.n_fixed; ++c)
+      rhs(part.n_free) -= scale * voigt_identity(part.fixed[c]) * x(part.fixed[c]);
   }
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
   decomposition.setThreshold(kSingularPivot);
