@@ -4,6 +4,8 @@
 /// the mixed-control driver's Newton iteration. Models that provide an analytic consistent
 /// tangent (`consistent_tangent(state, strain_increment)`) use it; otherwise central differences
 /// of the update are taken.
+#include "constitutive/integrators/integrator.h"
+#include "constitutive/models/dilatancy_cutoff.h"
 #include "constitutive/state.h"
 #include "constitutive/voigt.h"
 
@@ -24,6 +26,18 @@ Mat6 finite_difference_tangent(const Model& model, const State& state, const Mat
     const Mat3 s_minus = model.update(state, strain_from_voigt(minus), Mat3::Zero()).stress;
     tangent.col(k) = (stress_to_voigt(s_plus) - stress_to_voigt(s_minus)) / (2.0 * h);
   }
+  return tangent;
+}
+
+/// For a model whose `implicit_update` writes its consistent tangent (D-P, MC): that tangent, of the
+/// model that flows at the state's plastic dilation (models/dilatancy_cutoff.h), for `implicit` and
+/// `substep` (each model says why it serves substep); central differences for `explicit`, whose
+/// update is another map. Instantiated in the model's source, where its implicit_update is declared.
+template <class Model>
+Mat6 return_tangent_or_differences(const Model& model, const State& state, const Mat3& strain_increment) {
+  if (model.integrator() == Integrator::Explicit) return finite_difference_tangent(model, state, strain_increment);
+  Mat6 tangent;
+  implicit_update(flowing_model(model, state.plastic_dilation), state, strain_increment, &tangent);
   return tangent;
 }
 

@@ -112,10 +112,7 @@ State DruckerPrager::update(const State& state, const Mat3& strain_increment, co
 Mat6 DruckerPrager::consistent_tangent(const State& state, const Mat3& strain_increment) const {
   // `substep` converges to the exact rate solution, whose tangent the implicit one approximates to
   // first order in the increment: one update for a Newton tangent instead of the 12 of differences.
-  if (integrator() == Integrator::Explicit) return finite_difference_tangent(*this, state, strain_increment);
-  Mat6 tangent;
-  implicit_update(flowing_at(state.plastic_dilation), state, strain_increment, &tangent);
-  return tangent;
+  return return_tangent_or_differences(*this, state, strain_increment);
 }
 
 }  // namespace soilsph

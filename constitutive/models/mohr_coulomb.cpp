@@ -121,10 +121,7 @@ Mat6 MohrCoulomb::consistent_tangent(const State& state, const Mat3& strain_incr
   // With constant elasticity and flat planes `substep` reaches the exact rate solution, which the
   // principal-stress return also is: its tangent is substep's as well, one update for the 12 of
   // differences (and differences of substep's error-controlled stages are noisy at an edge).
-  if (integrator() == Integrator::Explicit) return finite_difference_tangent(*this, state, strain_increment);
-  Mat6 tangent;
-  implicit_update(flowing_at(state.plastic_dilation), state, strain_increment, &tangent);
-  return tangent;
+  return return_tangent_or_differences(*this, state, strain_increment);
 }
 
 }  // namespace soilsph
