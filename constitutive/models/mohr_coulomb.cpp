@@ -102,6 +102,30 @@ Mat3 MohrCoulomb::yield_gradient(const Mat3& sigma, double) const { return plane
 
 Mat3 MohrCoulomb::flow_direction(const Mat3& sigma, double) const { return plane_gradient(sigma, sin_psi_); }
 
+std::array<YieldPlane, MohrCoulomb::kMaxPlanes> MohrCoulomb::planes(const Mat3& sigma) const {
+  const Principal p = principal(sigma);
+  const Vec3& s = p.values;
+  const double scale = std::max(s.cwiseAbs().sum() + cohesion_term_, 1e-300);
+  // The plane of principal stresses (major, minor) = (i, j): (σ_i − σ_j) + (σ_i + σ_j) sin − 2c cosφ.
+  const auto pyramid = [&](int i, int j) {
+    const auto coefficients = [&](double sin_angle) {
+      Vec3 a = Vec3::Zero();
+      a(i) = 1.0 + sin_angle, a(j) = -(1.0 - sin_angle);
+      return p.compose(a);
+    };
+    return YieldPlane{mohr_coulomb_function(Vec3(s(i), 0.0, s(j)), sin_phi_, cohesion_term_) / scale,
+                      coefficients(sin_phi_), coefficients(sin_psi_)};
+  };
+  const auto cutoff = [&](int k) {
+    const Mat3 n = p.compose(Vec3::Unit(k));
+    return YieldPlane{(s(k) - tension_cutoff()) / scale, n, n};
+  };
+  std::array<YieldPlane, kMaxPlanes> planes{pyramid(0, 2), pyramid(1, 2), pyramid(0, 1)};
+  if (has_tension_cutoff())
+    for (int k = 0; k < 3; ++k) planes[3 + k] = cutoff(k);
+  return planes;
+}
+
 Mat3 MohrCoulomb::correct(const Mat3& sigma, double) const {
   const Principal p = principal(sigma);
   const MohrCoulombReturn r = return_principal(*this, p.values, elasticity_.at(0.0));

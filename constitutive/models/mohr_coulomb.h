@@ -10,6 +10,7 @@
 /// (docs/derivations.md, "Mohr–Coulomb"). Without a cut-off the pyramid's apex is the isotropic
 /// tension σ1 = σ2 = σ3 = c cotφ. The implicit return works in principal stresses with the main
 /// plane, the two edges and the apex (integrators/implicit_mohr_coulomb.h).
+#include <array>
 #include <limits>
 #include <string>
 
@@ -52,6 +53,15 @@ struct Principal {
 /// The spectral decomposition of a symmetric tensor, eigenvalues in descending order.
 Principal principal(const Mat3& sigma);
 
+/// One plane of the elastic domain's boundary at a stress: its normalized value (f_k over the scale
+/// of normalized_yield), ∂f_k/∂σ and the flow direction ∂g_k/∂σ, in the principal directions of
+/// that stress.
+struct YieldPlane {
+  double value;
+  Mat3 gradient;
+  Mat3 flow;
+};
+
 class MohrCoulomb : public PerfectPlasticity, public DilatancyCutoff<MohrCoulomb> {
  public:
   using Params = MohrCoulombParams;
@@ -82,6 +92,14 @@ class MohrCoulomb : public PerfectPlasticity, public DilatancyCutoff<MohrCoulomb
   Mat3 yield_gradient(const Mat3& sigma, double /*pc*/ = 0.0) const;
   /// ∂g/∂σ, as yield_gradient with ψ for φ (the cut-off's flow is associated).
   Mat3 flow_direction(const Mat3& sigma, double /*pc*/ = 0.0) const;
+  /// The planes of the sorted sextant σ1 ≥ σ2 ≥ σ3 one by one, for the CVODE reference's rate
+  /// equations, which combine the flows of the planes a stress lies on by Koiter's rule (an edge,
+  /// a corner, the apex): f13 (the main plane), f23 and f12 (the planes that meet it along the
+  /// compression edge σ1 = σ2 and the extension edge σ2 = σ3), and with a cut-off σ_k − T for
+  /// k = 1, 2, 3. Off an edge only f13 (or σ1 − T) can be 0. The first plane_count() are valid.
+  static constexpr int kMaxPlanes = 6;
+  int plane_count() const { return has_tension_cutoff() ? 6 : 3; }
+  std::array<YieldPlane, kMaxPlanes> planes(const Mat3& sigma) const;
   /// The correction after an explicit step: the implicit return of σ taken as an elastic trial.
   Mat3 correct(const Mat3& sigma, double pc = 0.0) const;
   /// True when the return of the trial is the apex or meets the tension cut-off, where substep's

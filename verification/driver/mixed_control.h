@@ -27,7 +27,7 @@ namespace soilsph::verification {
 struct MixedControlOptions {
   double tolerance = 1e-10;  ///< relative residual of the imposed stresses
   int max_iterations = 50;
-  int max_splits = 4;  ///< halvings of an increment whose Newton fails (up to 2^max_splits parts)
+  int max_splits = 8;  ///< halvings of an increment whose Newton fails (up to 2^max_splits parts)
   /// Driver sub-steps (path_substeps.h): 0 (the default) solves each increment of a leg with stress-
   /// imposed components once, as before; > 0 splits it into sub-steps until the step-doubling
   /// estimate of the increment's error is ≤ this (relative). Strain-controlled legs are never split

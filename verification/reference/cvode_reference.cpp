@@ -6,6 +6,8 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -13,6 +15,7 @@
 #include <string>
 
 #include "verification/driver/mixed_control_algebra.h"
+#include "verification/reference/yield_surfaces.h"
 
 namespace soilsph::verification {
 
@@ -41,65 +44,142 @@ constexpr double kTooClose = 1e-9;
 template <class Model>
 constexpr bool kPlastic = PlasticModel<Model>;
 
-/// The rates at one state for one leg and branch (elastic or plastic).
+/// The rates at one state for one leg and set of active surfaces (none: the elastic branch).
 struct Rates {
   Vec6 stress = Vec6::Zero();
   Vec6 strain = Vec6::Zero();
   double pc = 0.0;
-  double pore_pressure = 0.0;       ///< u̇, 0 on a drained leg
-  double dilation = 0.0;            ///< λ̇ tr n_g, the plastic dilation's rate
-  double plastic_multiplier = 0.0;  ///< λ̇, 0 on the elastic branch
-  bool defined = true;              ///< false where n_f:D:n_g + H ≤ 0: no plastic solution
+  double pore_pressure = 0.0;                      ///< u̇, 0 on a drained leg
+  double dilation = 0.0;                           ///< Σ λ̇_k tr n_g,k, the plastic dilation's rate
+  std::array<double, kMaxSurfaces> multipliers{};  ///< λ̇_k of the active surfaces, 0 elsewhere
+  Mat3 plastic_strain = Mat3::Zero();              ///< ε̇^p = Σ λ̇_k n_g,k
+  bool defined = true;  ///< false where the plastic system is singular or n_f:D:n_g + H ≤ 0
 };
 
-/// The rates at (σ, p_c) with plastic dilation d: the model that flows there (ψ = 0 past a dilatancy
-/// cut-off) gives them.
+bool is_active(unsigned active, int k) {
+  return (active >> k) & 1u;
+}
+
+/// The rates at (σ, p_c) with plastic dilation d and the surfaces of the bit set `active` flowing
+/// (yield_surfaces.h): the model that flows there (ψ = 0 past a dilatancy cut-off) gives them.
 template <class Model>
-Rates rates(const Model& given, const Leg& leg, const Partition& part, const Vec6& stress, double pc, double d,
-            bool plastic) {
+Rates rates(const Model& given, const Leg& leg, const Partition& part, const Vec6& stress, double pc,
+            double d, unsigned active) {
   const Model& model = flowing_model(given, d);
   const Mat3 sigma = stress_from_voigt(stress);
   const Moduli D = model.elasticity().at(mean_pressure(sigma));
   Mat6 C = voigt_stiffness(D);
-  Vec6 b = Vec6::Zero();
-  double denominator = 1.0;
-  Mat3 n_g = Mat3::Zero();
-  if constexpr (kPlastic<Model>) {
-    if (plastic) {
-      n_g = model.flow_direction(sigma, pc);
-      const Mat3 n_f = model.yield_gradient(sigma, pc);
-      const Vec6 a = stress_to_voigt(D.stiffness(n_g));  // D : n_g
-      b = stress_to_voigt(D.stiffness(n_f));             // n_f : D, paired with engineering strain rates
-      denominator = ddot(n_f, D.stiffness(n_g)) + model.hardening_modulus(sigma, pc);
-      if (!(denominator > 0.0)) {
-        Rates undefined;
-        undefined.defined = false;
-        return undefined;
-      }
-      C -= a * b.transpose() / denominator;
-    }
-  }
   Rates r;
   r.strain = leg.increment;  // imposed strain rates per unit pseudo-time (one increment)
-  r.pore_pressure = solve_free(C, part, leg.increment, r.strain);
-  r.stress = C * r.strain;
   if constexpr (kPlastic<Model>) {
-    if (plastic) {
-      r.plastic_multiplier = b.dot(r.strain) / denominator;
-      r.pc = model.hardening_rate(sigma, pc, r.plastic_multiplier, n_g);  // MCC: eq 27 in rate form
-      r.dilation = r.plastic_multiplier * n_g.trace();
+    if (active != 0) {
+      using Columns = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxSurfaces>;
+      using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSurfaces, kMaxSurfaces>;
+      const Surfaces surface = surfaces(model, sigma, pc);
+      int index[kMaxSurfaces];
+      int n = 0;
+      for (int k = 0; k < surface_count(model); ++k)
+        if (is_active(active, k)) index[n++] = k;
+      Columns A(6, n);      // D : n_g,k
+      Columns B(6, n);      // n_f,j : D, paired with engineering strain rates
+      Square system(n, n);  // n_f,j : D : n_g,k + H_j δ_jk
+      for (int a = 0; a < n; ++a) {
+        A.col(a) = stress_to_voigt(D.stiffness(surface[index[a]].flow));
+        B.col(a) = stress_to_voigt(D.stiffness(surface[index[a]].gradient));
+        for (int b = 0; b < n; ++b)
+          system(a, b) = ddot(surface[index[a]].gradient, D.stiffness(surface[index[b]].flow));
+        system(a, a) += surface[index[a]].hardening;
+      }
+      if (n == 1) {  // one surface: the rank-one update D − (D:n_g) ⊗ (n_f:D) / (n_f:D:n_g + H)
+        if (!(system(0, 0) > 0.0)) {
+          r.defined = false;
+          return r;
+        }
+        C -= A.col(0) * B.col(0).transpose() / system(0, 0);
+      } else {
+        Eigen::FullPivLU<Square> lu(system);
+        lu.setThreshold(kSingularPivot);
+        if (!lu.isInvertible()) {  // dependent gradients: a smaller set gives the same flow
+          r.defined = false;
+          return r;
+        }
+        system = lu.inverse();
+        C -= A * system * B.transpose();
+      }
+      r.pore_pressure = solve_free(C, part, leg.increment, r.strain);
+      r.stress = C * r.strain;
+      const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSurfaces> loading = B.transpose() * r.strain;
+      for (int a = 0; a < n; ++a) {  // λ̇ = G⁻¹ (n_f,j : D : ε̇)
+        const double multiplier = n == 1 ? B.col(0).dot(r.strain) / system(0, 0) : system.row(a).dot(loading);
+        r.multipliers[index[a]] = multiplier;
+        r.pc +=
+            model.hardening_rate(sigma, pc, multiplier, surface[index[a]].flow);  // MCC: eq 27 in rate form
+        r.dilation += multiplier * surface[index[a]].flow.trace();
+        r.plastic_strain += multiplier * surface[index[a]].flow;
+      }
+      return r;
     }
   }
+  r.pore_pressure = solve_free(C, part, leg.increment, r.strain);
+  r.stress = C * r.strain;
   return r;
 }
 
-/// What the CVODE callbacks need; `plastic` is the branch being integrated.
+/// Koiter's rule at a state: the bit set of the surfaces that flow under the leg's loading. Among
+/// the surfaces the stress lies on (normalized value ≥ −tolerance), except those in `leaving`, a
+/// set qualifies when its multipliers are all ≥ 0 and under its rates every other such surface has
+/// ḟ ≤ 0 (both to a relative 1e-10). The elastic set qualifies first. Several may qualify under
+/// mixed control: at the triaxial edge σ1 = σ2 one plane alone keeps σ_yy = σ_zz as well as both
+/// do (the other's loading is neutral), but it flows along whichever eigenvector the decomposition
+/// calls e1, so the rates would jump as round-off swaps e1 and e2. The set taken is then the one
+/// of least plastic strain rate ‖ε̇^p‖ (the symmetric split, as solve_free takes the least-norm
+/// strain), the smaller set on a tie.
+template <class Model>
+unsigned koiter_set(const Model& model, const Leg& leg, const Partition& part, const Vec6& stress, double pc,
+                    double d, double tolerance, unsigned leaving) {
+  constexpr double kTie = 1e-10;
+  const Mat3 sigma = stress_from_voigt(stress);
+  const Surfaces surface = surfaces(flowing_model(model, d), sigma, pc);
+  unsigned on = 0;
+  for (int k = 0; k < surface_count(model); ++k)
+    if (surface[k].value >= -tolerance && !is_active(leaving, k)) on |= 1u << k;
+  const double stress_rate_scale = rates(model, leg, part, stress, pc, d, 0).stress.norm();
+  unsigned best = 0;
+  double least = std::numeric_limits<double>::infinity();
+  for (int size = 0; size <= std::popcount(on); ++size)
+    for (unsigned set = 0; set <= on; ++set) {
+      if ((set & ~on) != 0 || std::popcount(set) != size) continue;
+      const Rates r = rates(model, leg, part, stress, pc, d, set);
+      if (!r.defined) continue;
+      const Mat3 stress_rate = stress_from_voigt(r.stress);
+      bool consistent = true;
+      for (int k = 0; k < surface_count(model) && consistent; ++k) {
+        if (is_active(set, k))
+          consistent = r.multipliers[k] >= -kTie * r.strain.norm();
+        else if (is_active(on, k))
+          consistent =
+              ddot(surface[k].gradient, stress_rate) <= kTie * surface[k].gradient.norm() * stress_rate_scale;
+      }
+      if (!consistent) continue;
+      if (set == 0) return 0;
+      const double norm = r.plastic_strain.norm();
+      if (norm < least * (1.0 - kTie)) best = set, least = norm;
+    }
+  if (least == std::numeric_limits<double>::infinity())
+    throw std::runtime_error(
+        "cvode reference: no set of the yield planes the stress lies on meets Koiter's conditions "
+        "(multipliers >= 0, no other plane loaded)");
+  return best;
+}
+
+/// What the CVODE callbacks need; `active` is the branch being integrated: the bit set of the
+/// flowing surfaces (0: elastic).
 template <class Model>
 struct Problem {
   const Model* model;
   const Leg* leg;
   Partition part;
-  bool plastic = false;
+  unsigned active = 0;
   std::string last_error;
 };
 
@@ -112,12 +192,15 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   auto& problem = *static_cast<Problem<Model>*>(data);
   const double* v = N_VGetArrayPointer(y);
   const Rates r = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc],
-                        dilation_of(*problem.model, v), problem.plastic);
+                        dilation_of(*problem.model, v), problem.active);
   if (!r.defined) {
-    problem.last_error =
-        "the plastic modulus n_f:D:n_g + H is not positive, so plastic loading has no continuum solution "
-        "from this state (the Drucker-Prager apex with psi = 0, or Cam-Clay softening on the dry side that "
-        "outweighs the elastic stiffness)";
+    problem.last_error = std::popcount(problem.active) > 1
+                             ? "the flowing yield planes' system n_f:D:n_g is singular at this state"
+                             : "the plastic modulus n_f:D:n_g + H is not positive, so plastic loading has no "
+                               "continuum solution "
+                               "from this state (the Drucker-Prager apex with psi = 0, or Cam-Clay softening "
+                               "on the dry side that "
+                               "outweighs the elastic stiffness)";
     return -1;  // unrecoverable
   }
   double* d = N_VGetArrayPointer(ydot);
@@ -147,30 +230,41 @@ double softening_bound(const Model& model) {
     return 0.0;
 }
 
-/// g[0], elastic branch: the yield function (its crossing of 0 upwards is first yield); plastic
-/// branch: λ̇ (its crossing of 0 downwards is elastic unloading). g[1]: p_c − p_c,min, whose crossing
-/// downwards is where softening stops (the rate ṗ_c jumps from θ p_c,min ε̇_v^p to 0 there, a kink no
-/// step may straddle); constant where the model has no bound. g[2]: cut-off − plastic dilation, whose
-/// crossing downwards is where dilation stops (ψ jumps to 0); constant without a cut-off.
+/// The switching functions, n = surface_count() of them for the surfaces and two more. g[k], k < n:
+/// for a surface that flows, λ̇_k (its crossing of 0 downwards is elastic unloading from it); for
+/// one that does not, its yield function (its crossing of 0 upwards is first yield on it). g[n]:
+/// p_c − p_c,min, whose crossing downwards is where softening stops (the rate ṗ_c jumps from
+/// θ p_c,min ε̇_v^p to 0 there, a kink no step may straddle); constant where the model has no bound.
+/// g[n + 1]: cut-off − plastic dilation, whose crossing downwards is where dilation stops (ψ jumps to
+/// 0); constant without a cut-off.
 template <class Model>
 int switching_function(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
   auto& problem = *static_cast<Problem<Model>*>(data);
+  const Model& model = *problem.model;
   const double* v = N_VGetArrayPointer(y);
-  if constexpr (kPlastic<Model>) {
-    if (problem.plastic) {
-      g[0] = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc], dilation_of(*problem.model, v),
-                   true)
-                 .plastic_multiplier;
-    } else {
-      g[0] = problem.model->normalized_yield(stress_from_voigt(stress_of(v)), v[kPc]);
-    }
-  } else {
-    g[0] = -1.0;
+  const int n = surface_count(model);
+  const unsigned all = (1u << n) - 1u;
+  const double d = dilation_of(model, v);
+  if (problem.active != 0) {
+    const Rates r = rates(model, *problem.leg, problem.part, stress_of(v), v[kPc], d, problem.active);
+    for (int k = 0; k < n; ++k)
+      if (is_active(problem.active, k)) g[k] = r.multipliers[k];
   }
-  const double bound = softening_bound(*problem.model);
-  g[1] = bound > 0.0 ? v[kPc] - bound : 1.0;
-  g[2] = limits_dilation(*problem.model) ? cutoff_of(*problem.model) - v[kDilation] : 1.0;
+  if (problem.active != all) {
+    const auto values = surface_values(flowing_model(model, d), stress_from_voigt(stress_of(v)), v[kPc]);
+    for (int k = 0; k < n; ++k)
+      if (!is_active(problem.active, k)) g[k] = values[k];
+  }
+  const double bound = softening_bound(model);
+  g[n] = bound > 0.0 ? v[kPc] - bound : 1.0;
+  g[n + 1] = limits_dilation(model) ? cutoff_of(model) - v[kDilation] : 1.0;
   return 0;
+}
+
+/// The root directions of the switching functions for the branch `active`.
+void set_directions(std::span<int> directions, unsigned active, int n) {
+  for (int k = 0; k < n; ++k) directions[k] = is_active(active, k) ? -1 : 1;
+  directions[n] = directions[n + 1] = -1;
 }
 
 template <class Model>
@@ -222,10 +316,43 @@ bool starts_plastic(const Model& model, const Leg& leg, const Partition& part, c
     if (model.normalized_yield(sigma, pc) < -surface_tolerance) return false;
     constexpr double kProbe = 1e-3;
     // Elastic rates: the same for the model and its ψ = 0 twin, so the dilation does not matter.
-    const Vec6 trial = stress + kProbe * rates(model, leg, part, stress, pc, 0.0, false).stress;
+    const Vec6 trial = stress + kProbe * rates(model, leg, part, stress, pc, 0.0, 0).stress;
     return model.yield(stress_from_voigt(trial), pc) > model.yield(sigma, pc);
   }
   return false;
+}
+
+/// The flowing surfaces at the start of a leg: for one surface, starts_plastic; for planes, Koiter's
+/// rule among those the stress lies on.
+template <class Model>
+unsigned active_at_start(const Model& model, const Leg& leg, const Partition& part, const Vec6& stress,
+                         double pc, double d, double surface_tolerance) {
+  if constexpr (HasPlanes<Model>)
+    return koiter_set(model, leg, part, stress, pc, d, surface_tolerance, 0);
+  else
+    return starts_plastic(model, leg, part, stress, pc, surface_tolerance) ? 1u : 0u;
+}
+
+/// The flowing surfaces after a root of the surfaces' switching functions (`found`: CVODE's root
+/// information), so that no step straddles the kink. One surface: to elastic where λ̇ reached 0; to
+/// plastic where f reached 0 unless the loading is tangential and turns inwards (then the state
+/// stays elastic). Planes: Koiter's rule among the planes the stress lies on, without those whose
+/// λ̇ reached 0.
+template <class Model>
+unsigned active_at_root(const Model& model, const Leg& leg, const Partition& part, const Vec6& stress,
+                        double pc, double d, double surface_tolerance, unsigned active,
+                        std::span<const int> found) {
+  if constexpr (HasPlanes<Model>) {
+    unsigned leaving = 0;
+    for (int k = 0; k < surface_count(model); ++k)
+      if (found[k] != 0 && is_active(active, k)) leaving |= 1u << k;
+    return koiter_set(model, leg, part, stress, pc, d, surface_tolerance, leaving);
+  } else {
+    return active == 0 &&
+                   starts_plastic(model, leg, part, stress, pc, std::numeric_limits<double>::infinity())
+               ? 1u
+               : 0u;
+  }
 }
 
 template <class Model>
@@ -233,7 +360,10 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
                             const CvodeOptions& options) {
   PointHistory history{{Mat3::Zero(), initial}};
   if (legs.empty()) return history;
-  Problem<Model> problem{&model, &legs[0], Partition(legs[0]), false, {}};
+  Problem<Model> problem{&model, &legs[0], Partition(legs[0]), 0, {}};
+  const int n = surface_count(model);  // the switching functions: n surfaces, softening bound, dilation
+  std::array<int, kMaxSurfaces + 2> directions{}, found{};
+  const std::span<int> directions_used(directions.data(), n + 2), found_used(found.data(), n + 2);
   Solver s;
   if (SUNContext_Create(nullptr, &s.context) != 0) throw std::runtime_error("cvode reference: no SUNContext");
   const int size = ode_size(model);
@@ -262,7 +392,7 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   s.linear_solver = SUNLinSol_Dense(s.y, s.matrix, s.context);
   check(CVodeSetLinearSolver(s.memory, s.linear_solver, s.matrix), "CVodeSetLinearSolver", problem);
   check(CVodeSetMaxNumSteps(s.memory, options.max_steps_per_increment), "CVodeSetMaxNumSteps", problem);
-  check(CVodeRootInit(s.memory, 3, switching_function<Model>), "CVodeRootInit", problem);
+  check(CVodeRootInit(s.memory, n + 2, switching_function<Model>), "CVodeRootInit", problem);
   check(CVodeSetNoInactiveRootWarn(s.memory), "CVodeSetNoInactiveRootWarn", problem);
 
   std::size_t leg_index = 0;
@@ -274,11 +404,11 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
       problem.leg = &leg;
       problem.part = Partition(leg);
       if (!leg.undrained) y[kPorePressure] = 0.0;  // drainage open: the excess has dissipated
-      problem.plastic =
-          starts_plastic(model, leg, problem.part, stress_of(y), y[kPc], options.surface_tolerance);
+      problem.active = active_at_start(model, leg, problem.part, stress_of(y), y[kPc], dilation_of(model, y),
+                                       options.surface_tolerance);
       check(CVodeReInit(s.memory, 0.0, s.y), "CVodeReInit", problem);
-      int directions[3] = {problem.plastic ? -1 : 1, -1, -1};
-      check(CVodeSetRootDirection(s.memory, directions), "CVodeSetRootDirection", problem);
+      set_directions(directions_used, problem.active, n);
+      check(CVodeSetRootDirection(s.memory, directions.data()), "CVodeSetRootDirection", problem);
       sunrealtype t = 0.0;
       for (int k = 1; k <= leg.increments; ++k) {
         for (int switches = 0;; ++switches) {
@@ -299,24 +429,22 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
           if (flag != CV_ROOT_RETURN) break;
           if (switches > 100)
             throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
-          int found[3] = {0, 0, 0};
-          check(CVodeGetRootInfo(s.memory, found), "CVodeGetRootInfo", problem);
-          if (found[1] != 0) {
+          found.fill(0);
+          check(CVodeGetRootInfo(s.memory, found.data()), "CVodeGetRootInfo", problem);
+          if (found[n] != 0) {
             // Softening reached the bound: p_c onto it exactly, where the model's rate is 0, and on.
             y[kPc] = softening_bound(model);
-          } else if (found[2] != 0) {
+          } else if (found[n + 1] != 0) {
             // Dilation reached the cut-off: onto it exactly, where the ψ = 0 twin flows on.
             y[kDilation] = cutoff_of(model);
-          } else {
-            // Switch branch at the root and restart there, so no step straddles the kink: to
-            // elastic where λ̇ reached 0; to plastic where f reached 0 unless the loading is
-            // tangential and turns inwards (then the state stays elastic).
-            problem.plastic = !problem.plastic && starts_plastic(model, leg, problem.part, stress_of(y), y[kPc],
-                                                                 std::numeric_limits<double>::infinity());
+          } else {  // switch branch at the root and restart there
+            problem.active =
+                active_at_root(model, leg, problem.part, stress_of(y), y[kPc], dilation_of(model, y),
+                               options.surface_tolerance, problem.active, found_used);
           }
-          directions[0] = problem.plastic ? -1 : 1;
+          set_directions(directions_used, problem.active, n);
           check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
-          check(CVodeSetRootDirection(s.memory, directions), "CVodeSetRootDirection", problem);
+          check(CVodeSetRootDirection(s.memory, directions.data()), "CVodeSetRootDirection", problem);
         }
         PointSample sample;
         sample.strain = strain_from_voigt(Eigen::Map<const Vec6>(y + kStrain));

@@ -11,9 +11,11 @@
 /// stress rates with the current D^ep. Pseudo-time is the increment count of a leg, so the output
 /// falls on the driver's increments. The elastic→plastic transition (f = 0) and elastic unloading
 /// (λ̇ = 0) are located by CVODE's root finding; the integration is reinitialised there with the
-/// other branch, so the kink is resolved and never stepped across. Only the model's pure functions
-/// (yield, yield_gradient, flow_direction, hardening_modulus, hardening_rate, elasticity) are used,
-/// not its update.
+/// other branch, so the kink is resolved and never stepped across. A model made of planes
+/// (Mohr–Coulomb's `planes()`) flows on each plane the stress lies on with its own multiplier,
+/// the active set chosen by Koiter's rule (yield_surfaces.h), and each plane has its own switching
+/// function. Only the model's pure functions (yield, yield_gradient, flow_direction, planes,
+/// hardening_modulus, hardening_rate, elasticity) are used, not its update.
 #include <span>
 
 #include "constitutive/material.h"
