@@ -143,8 +143,9 @@ State MohrCoulomb::update(const State& state, const Mat3& strain_increment, cons
 
 Mat6 MohrCoulomb::consistent_tangent(const State& state, const Mat3& strain_increment) const {
   // With constant elasticity and flat planes `substep` reaches the exact rate solution, which the
-  // principal-stress return also is: its tangent is substep's as well, one update for the 12 of
-  // differences (and differences of substep's error-controlled stages are noisy at an edge).
+  // principal-stress return also is while the flowing planes stay the same: its tangent serves as
+  // substep's, one update for the 12 of differences (and differences of substep's error-controlled
+  // stages are noisy at an edge); the driver's Newton needs a direction, not the exact derivative.
   return return_tangent_or_differences(*this, state, strain_increment);
 }
 

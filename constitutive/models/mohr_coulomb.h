@@ -27,7 +27,8 @@ namespace soilsph {
 
 /// The parameters, with the defaults of an input file (the constructor checks every range).
 struct MohrCoulombParams : FrictionalParams {
-  /// Input default: the principal-stress return is exact for this piecewise-linear model.
+  /// Input default: the principal-stress return is exact for this piecewise-linear model while the
+  /// flowing planes do not change inside an increment (docs/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
   static constexpr double kNoTensionCutoff = std::numeric_limits<double>::infinity();
   double tension_cutoff = kNoTensionCutoff;  ///< T, Pa, the largest principal stress; ∞: none (the apex)
