@@ -9,6 +9,12 @@
 /// is model-specific by nature stays so: a closed form describes one model, and the verification
 /// report writes the constants of MCC's yield ellipse and void ratio for its plots.)
 ///
+/// Optional hooks, found by `requires` where they are used and absent from the concepts: a dilatancy
+/// cut-off (models/dilatancy_cutoff.h), the reasons a soil may loosen without bound
+/// (models/loosening.h), and a multi-surface model's planes one by one, `plane_count()` and
+/// `planes(σ)`, with which the CVODE reference combines an edge's or corner's flows by Koiter's rule
+/// (verification/reference/yield_surfaces.h; Mohr–Coulomb).
+///
 /// Adding a model: a folder's worth of files in constitutive/ (its header and source in models/, its
 /// implicit return in integrators/), then one line in material.h's Material variant and its name
 /// in read_material (material.cpp).

@@ -56,8 +56,7 @@ Surfaces surfaces(const Model& model, const Mat3& sigma, double pc) {
   return s;
 }
 
-/// The normalized values alone (no gradients: a smooth model's gradient may not exist off its
-/// surface, e.g. at MCC's tip).
+/// The normalized values alone: what the switching functions of the surfaces that do not flow need.
 template <class Model>
 std::array<double, kMaxSurfaces> surface_values(const Model& model, const Mat3& sigma, double pc) {
   std::array<double, kMaxSurfaces> v{};
