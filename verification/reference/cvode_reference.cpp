@@ -197,10 +197,8 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
     problem.last_error = std::popcount(problem.active) > 1
                              ? "the flowing yield planes' system n_f:D:n_g is singular at this state"
                              : "the plastic modulus n_f:D:n_g + H is not positive, so plastic loading has no "
-                               "continuum solution "
-                               "from this state (the Drucker-Prager apex with psi = 0, or Cam-Clay softening "
-                               "on the dry side that "
-                               "outweighs the elastic stiffness)";
+                               "continuum solution from this state (the Drucker-Prager apex with psi = 0, or "
+                               "Cam-Clay softening on the dry side that outweighs the elastic stiffness)";
     return -1;  // unrecoverable
   }
   double* d = N_VGetArrayPointer(ydot);
