@@ -143,13 +143,14 @@ unsigned koiter_set(const Model& model, const Leg& leg, const Partition& part, c
   unsigned on = 0;
   for (int k = 0; k < surface_count(model); ++k)
     if (surface[k].value >= -tolerance && !is_active(leaving, k)) on |= 1u << k;
-  const double stress_rate_scale = rates(model, leg, part, stress, pc, d, 0).stress.norm();
+  const Rates elastic = rates(model, leg, part, stress, pc, d, 0);
+  const double stress_rate_scale = elastic.stress.norm();
   unsigned best = 0;
   double least = std::numeric_limits<double>::infinity();
   for (int size = 0; size <= std::popcount(on); ++size)
     for (unsigned set = 0; set <= on; ++set) {
       if ((set & ~on) != 0 || std::popcount(set) != size) continue;
-      const Rates r = rates(model, leg, part, stress, pc, d, set);
+      const Rates r = set == 0 ? elastic : rates(model, leg, part, stress, pc, d, set);
       if (!r.defined) continue;
       const Mat3 stress_rate = stress_from_voigt(r.stress);
       bool consistent = true;
