@@ -67,6 +67,10 @@ namespace {
 double mohr_coulomb_function(const Vec3& s, double sin_phi, double cohesion_term) {
   return (s(0) - s(2)) + (s(0) + s(2)) * sin_phi - cohesion_term;
 }
+/// The stress scale of a normalized yield value: Σ|σ_i| + 2c cosφ (not below 1e-300).
+double yield_scale(const Vec3& s, double cohesion_term) {
+  return std::max(s.cwiseAbs().sum() + cohesion_term, 1e-300);
+}
 }  // namespace
 
 double MohrCoulomb::yield(const Mat3& sigma, double) const {
@@ -79,8 +83,7 @@ double MohrCoulomb::normalized_yield(const Mat3& sigma, double) const {
   const Vec3 s = principal(sigma).values;
   double f = mohr_coulomb_function(s, sin_phi_, cohesion_term_);
   if (has_tension_cutoff()) f = std::max(f, s(0) - tension_cutoff());
-  const double scale = s.cwiseAbs().sum() + cohesion_term_;
-  return f / std::max(scale, 1e-300);
+  return f / yield_scale(s, cohesion_term_);
 }
 
 Mat3 MohrCoulomb::plane_gradient(const Mat3& sigma, double sin_angle) const {
@@ -105,7 +108,7 @@ Mat3 MohrCoulomb::flow_direction(const Mat3& sigma, double) const { return plane
 std::array<YieldPlane, MohrCoulomb::kMaxPlanes> MohrCoulomb::planes(const Mat3& sigma) const {
   const Principal p = principal(sigma);
   const Vec3& s = p.values;
-  const double scale = std::max(s.cwiseAbs().sum() + cohesion_term_, 1e-300);
+  const double scale = yield_scale(s, cohesion_term_);
   // The plane of principal stresses (major, minor) = (i, j): (σ_i − σ_j) + (σ_i + σ_j) sin − 2c cosφ.
   const auto pyramid = [&](int i, int j) {
     const auto coefficients = [&](double sin_angle) {
