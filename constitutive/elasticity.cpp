@@ -57,8 +57,8 @@ double expm1_ratio_slope(double x, double em1) {
 }
 }  // namespace
 
-ElasticVolumeStep Elasticity::volume_step(double p, double d_eps_v) const {
-  if (kind_ == Kind::PressureDependent && p >= p_floor_) {
+ElasticVolumeStep Elasticity::pressure_dependent_volume_step(double p, double d_eps_v) const {
+  if (p >= p_floor_) {
     const double x = d_eps_v / kappa_star_, em1 = std::expm1(x);
     const double end = p + p * em1;
     if (end >= p_floor_) {
@@ -70,11 +70,11 @@ ElasticVolumeStep Elasticity::volume_step(double p, double d_eps_v) const {
           end, {K_end, shear_from_bulk(K_end)}, {K_sec, shear_from_bulk(K_sec)}, {dK, shear_from_bulk(dK)}};
     }
   }
-  // Constant elasticity, or at or below the floor for part of the step.
+  // At or below the floor for part of the step.
   const double end = pressure_after(p, d_eps_v);
   const Moduli secant_moduli = secant(p, d_eps_v);
-  double dK = 0.0;  // constant elasticity, and below the floor throughout (K_sec = p_f/κ*)
-  if (kind_ == Kind::PressureDependent && (p < p_floor_) != (end < p_floor_)) {
+  double dK = 0.0;  // below the floor throughout (K_sec = p_f/κ*)
+  if ((p < p_floor_) != (end < p_floor_)) {
     // Crossing the floor: dK_sec/dεv = (K_t(end) − K_sec)/dεv, ≥ 0 as K_t is non-decreasing in p.
     dK = std::max((at(end).K - secant_moduli.K) / d_eps_v, 0.0);
   }

@@ -60,10 +60,15 @@ class Elasticity {
   /// Δε_v → 0), G from K and ν. Equal to at(p) for constant elasticity.
   Moduli secant(double p, double d_eps_v) const;
   /// The pressure after dεv, the tangent moduli there, the secant moduli and their slope, with one
-  /// exponential on the swelling line (the implicit return's inner loop).
-  ElasticVolumeStep volume_step(double p, double d_eps_v) const;
+  /// exponential on the swelling line (the implicit return's inner loop). Constant elasticity inline:
+  /// the call was 3 % of the MCC collapse's instructions.
+  ElasticVolumeStep volume_step(double p, double d_eps_v) const {
+    if (kind_ == Kind::Constant) return {p + constant_.K * d_eps_v, constant_, constant_, {0.0, 0.0}};
+    return pressure_dependent_volume_step(p, d_eps_v);
+  }
 
  private:
+  ElasticVolumeStep pressure_dependent_volume_step(double p, double d_eps_v) const;
   double shear_from_bulk(double K) const { return 1.5 * K * (1.0 - 2.0 * nu_) / (1.0 + nu_); }
 
   Kind kind_ = Kind::Constant;
