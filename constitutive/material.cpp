@@ -48,6 +48,16 @@ std::string_view model_name(const Material& material) {
   return std::visit([](const auto& model) { return std::decay_t<decltype(model)>::kName; }, material);
 }
 
+double viscoplastic_relaxation_time(const Material& material) {
+  return std::visit(
+      [](const auto& model) {
+        if constexpr (requires { model.params().viscoplastic_relaxation_time; })
+          return model.params().viscoplastic_relaxation_time;
+        return 0.0;
+      },
+      material);
+}
+
 double density(const Material& material) {
   return std::visit([](const auto& model) { return model.params().density; }, material);
 }

@@ -21,11 +21,27 @@ static_assert(ConstitutiveModel<LinearElastic>);
 static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay> && PlasticModel<MohrCoulomb>);
 
 /// Every key a `[material]` table may hold, whichever model it selects.
-inline constexpr std::string_view kMaterialKeys[] = {
-    "model", "density", "young_modulus", "poisson_ratio", "friction_angle", "cohesion", "dilatancy_angle",
-    "compression_index", "swelling_index", "initial_void_ratio", "elasticity", "elastic_pressure_floor",
-    "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential",
-    "tension_cutoff"};
+inline constexpr std::string_view kMaterialKeys[] = {"model",
+                                                     "density",
+                                                     "young_modulus",
+                                                     "poisson_ratio",
+                                                     "friction_angle",
+                                                     "cohesion",
+                                                     "dilatancy_angle",
+                                                     "compression_index",
+                                                     "swelling_index",
+                                                     "initial_void_ratio",
+                                                     "elasticity",
+                                                     "elastic_pressure_floor",
+                                                     "integrator",
+                                                     "substep_tolerance",
+                                                     "implicit_alpha",
+                                                     "implicit_tolerance",
+                                                     "plastic_potential",
+                                                     "tension_cutoff",
+                                                     "dilatancy_cutoff",
+                                                     "minimum_preconsolidation",
+                                                     "viscoplastic_relaxation_time"};
 
 /// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
 /// other models are reported on stderr as ignored; keys no model knows are errors.
@@ -53,6 +69,9 @@ Material with_edited_params(const Material& material, Edit edit) {
 
 std::string_view model_name(const Material& material);
 double density(const Material& material);
+/// The Duvaut–Lions relaxation time τ of the SPH solver (s; constitutive/viscoplastic_relaxation.h):
+/// 0 for a rate-independent material and for linear elasticity.
+double viscoplastic_relaxation_time(const Material& material);
 
 /// Whether the model has a preconsolidation pressure, i.e. whether an OCR applies to it.
 bool has_preconsolidation(const Material& material);

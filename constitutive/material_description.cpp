@@ -27,6 +27,10 @@ Parameters parameters(const LinearElastic& m) {
   return out;
 }
 
+void add_relaxation_time(Parameters& out, double tau) {
+  if (tau > 0.0) out.emplace_back("viscoplastic_relaxation_time", number(tau));  // absent: rate-independent
+}
+
 /// The keys of frictional_fields (D-P, Mohr–Coulomb), after model and density.
 template <class Model>
 Parameters frictional_parameters(const Model& m) {
@@ -38,6 +42,7 @@ Parameters frictional_parameters(const Model& m) {
   out.emplace_back("friction_angle", number(p.friction_angle));
   out.emplace_back("cohesion", number(p.cohesion));
   out.emplace_back("dilatancy_angle", number(p.dilatancy_angle));
+  add_relaxation_time(out, p.viscoplastic_relaxation_time);
   return out;
 }
 
@@ -69,6 +74,7 @@ Parameters parameters(const ModifiedCamClay& m) {
   out.emplace_back("implicit_tolerance", number(p.implicit_tolerance));
   if (p.minimum_preconsolidation > 0.0)  // absent: none
     out.emplace_back("minimum_preconsolidation", number(p.minimum_preconsolidation));
+  add_relaxation_time(out, p.viscoplastic_relaxation_time);
   return out;
 }
 Parameters parameters(const MohrCoulomb& m) {

@@ -14,6 +14,12 @@ inline constexpr double kMaxStress = 1e12;
 /// E = 1e24 the explicit D-P undrained path returned p' = 0 instead of 100 kPa.
 inline constexpr double kMaxYoungModulus = 1e12;
 
+/// Largest viscoplastic relaxation time, s: far beyond any run (τ → ∞ is elasticity).
+inline constexpr double kMaxRelaxationTime = 1e3;
+
+inline Range relaxation_time_range() {
+  return Range::closed(0.0, kMaxRelaxationTime);
+}
 inline Range young_modulus_range() { return Range::open_closed(0.0, kMaxYoungModulus); }
 inline Range stress_range() { return Range::open_closed(0.0, kMaxStress); }  ///< (0, kMaxStress]
 

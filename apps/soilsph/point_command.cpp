@@ -10,6 +10,7 @@
 #include "constitutive/material_description.h"
 #include "constitutive/parameters.h"
 #include "soilsph/version.h"
+#include "verification/driver/rate_independence.h"
 #include "verification/paths/strain_path_csv.h"
 #include "verification/point_test.h"
 #include "verification/programme/programme_file.h"
@@ -45,7 +46,10 @@ Material load_point_material(const PointOptions& o) {
   }
   const toml::table* table = root["material"].as_table();
   if (!table) throw ParameterError(o.material_path + ": no [material] table");
-  return blaming_overrides(o.overrides, [&] { return read_material(TableReader(*table, o.material_path, "material")); });
+  const Material material = blaming_overrides(
+      o.overrides, [&] { return read_material(TableReader(*table, o.material_path, "material")); });
+  warn_if_rate_dependent(material, o.material_path);
+  return material;
 }
 
 /// --test and --strain-path resolved: `--test strain-path:FILE` is a shorthand for

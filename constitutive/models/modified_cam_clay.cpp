@@ -36,6 +36,8 @@ void ModifiedCamClayParams::fields(const Io& io) {
   io.number_or("implicit_alpha", implicit_alpha, Range::closed(0.5, 1.0));
   io.number_or("implicit_tolerance", implicit_tolerance, Range::closed(0.0, 1e-2));
   io.number_or("minimum_preconsolidation", minimum_preconsolidation, Range::closed(0.0, limits::kMaxStress), "Pa");
+  io.number_or("viscoplastic_relaxation_time", viscoplastic_relaxation_time, limits::relaxation_time_range(),
+               "s");
 }
 
 ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) { return read_fields<ModifiedCamClayParams>(t); }

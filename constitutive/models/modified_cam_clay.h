@@ -50,6 +50,9 @@ struct ModifiedCamClayParams {
   /// ratio on the normal compression line, e = e_N − λ ln p_c,min); 0 (the default): none, eq 27 as
   /// printed. Compression still hardens from it. See hardening_exponent_at().
   double minimum_preconsolidation = 0.0;
+  /// τ, s: Duvaut–Lions relaxation time in the SPH solver (constitutive/viscoplastic_relaxation.h); 0:
+  /// rate-independent, as the paper.
+  double viscoplastic_relaxation_time = 0.0;
 
   static ModifiedCamClayParams read(const TableReader& table);
   /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).

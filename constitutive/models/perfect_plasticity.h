@@ -41,11 +41,14 @@ struct FrictionalParams {
   double dilatancy_angle = 0.0;  ///< ψ, degrees, 0 ≤ ψ ≤ φ
   /// Plastic volumetric strain at which dilation stops (ψ → 0; models/dilatancy_cutoff.h), +∞: none.
   double dilatancy_cutoff = std::numeric_limits<double>::infinity();
+  /// τ, s: Duvaut–Lions relaxation time in the SPH solver (constitutive/viscoplastic_relaxation.h); 0:
+  /// rate-independent.
+  double viscoplastic_relaxation_time = 0.0;
 };
 
 /// Their keys, ranges and defaults, for Params::fields: density, E, ν, φ, c (default 0), ψ (default
 /// 0, at most φ), the dilatancy cut-off (default none; a plastic volumetric strain up to 1, e^1 times
-/// the volume, far beyond any soil's).
+/// the volume, far beyond any soil's), the viscoplastic relaxation time (default 0).
 template <class Io>
 void frictional_fields(const Io& io, FrictionalParams& p) {
   io.number("density", p.density, Range::positive(), "kg/m^3");
@@ -55,6 +58,8 @@ void frictional_fields(const Io& io, FrictionalParams& p) {
   io.number_or("cohesion", p.cohesion, Range::closed(0.0, limits::kMaxStress), "Pa");
   io.number_or("dilatancy_angle", p.dilatancy_angle, Range::closed(0.0, p.friction_angle), "degrees");
   io.number_if_given("dilatancy_cutoff", p.dilatancy_cutoff, Range::open_closed(0.0, 1.0));
+  io.number_or("viscoplastic_relaxation_time", p.viscoplastic_relaxation_time,
+               limits::relaxation_time_range(), "s");
 }
 
 }  // namespace soilsph

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/viscoplastic_relaxation.h"
 #include "sph/particles.h"
 #include "sph/stages/velocity_gradient.h"
 
@@ -107,13 +108,19 @@ State update_splitting_on_failure(const Model& model, const Model& fallback, con
 }
 
 /// σ^{n+1} of soil particle i for the velocity gradient L over dt, and its in-plane stress copied
-/// for the momentum stage; a failed update is recorded and leaves the particle unchanged.
+/// for the momentum stage; a failed update is recorded and leaves the particle unchanged. A material
+/// with a viscoplastic relaxation time relaxes towards the model's update (viscoplastic_relaxation.h).
 template <class Model>
 void update_particle_stress(const Model& model, const Model& fallback, Particles& p, std::size_t i,
                             const VelocityGradient& L, double dt, StepFailure& failure) {
   try {
-    p.state[i] = update_splitting_on_failure(model, fallback, p.state[i], L.strain_increment(dt),
-                                             L.spin_increment(dt), failure);
+    const Mat3 strain = L.strain_increment(dt), spin = L.spin_increment(dt);
+    State next = update_splitting_on_failure(model, fallback, p.state[i], strain, spin, failure);
+    if constexpr (requires { model.params().viscoplastic_relaxation_time; }) {
+      if (const double tau = model.params().viscoplastic_relaxation_time; tau > 0.0)
+        next = relax_viscoplastically(model.elasticity(), p.state[i], strain, spin, next, dt / tau);
+    }
+    p.state[i] = next;
   } catch (const std::exception& e) {
     failure.record("stress update of soil particle " + std::to_string(i) + ": " + e.what());
     return;

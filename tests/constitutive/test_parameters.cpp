@@ -83,6 +83,10 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
        "\"paper-eq20\")"},
       {kDruckerPrager + "plastic_potential = 20\n", "case.toml: [material] plastic_potential"},
       {kCamClay + "elasticity = \"constant\"\n", "[material] young_modulus: is missing"},
+      {kCamClay + "viscoplastic_relaxation_time = -1e-4\n",
+       "[material] viscoplastic_relaxation_time = -0.0001 is out of range (allowed: 0 <= value <= 1000 s)"},
+      {kDruckerPrager + "viscoplastic_relaxation_time = 1e4\n",
+       "[material] viscoplastic_relaxation_time = 10000 is out of range (allowed: 0 <= value <= 1000 s)"},
       {kDruckerPrager + "frictoin_angle = 30.0\n",
        "case.toml: [material] frictoin_angle: is not a known key"},
   };

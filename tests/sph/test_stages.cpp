@@ -288,3 +288,37 @@ TEST_CASE("the artificial stress's weight f^n from its table is within the Hermi
       }
     }
 }
+
+TEST_CASE("a viscoplastic material carries the overstress G rate tau of its relaxation time in simple shear",
+          "[stages][viscoplastic]") {
+  // Shear without spin, vx = ½γ̇ y, vy = ½γ̇ x, held on a lattice: eq 23 gives the engineering shear
+  // rate γ̇ m and no spin (a spin would turn the shear stress into normal stresses by the Jaumann
+  // terms). D-P past yield at constant p
+  // (ψ = 0) then settles where the Duvaut–Lions step stands still, σ_xy = τ_y + G γ̇ m τ
+  // (constitutive/viscoplastic_relaxation.h), τ_y = k + 3α p0 from the paper's match (eq 17–18);
+  // without the key on τ_y itself.
+  const CubicSpline W(1.3 * kDx);
+  const double E = 1.0e8, nu = 0.3, c = 1.0e4, phi = 35.0, p0 = 1.0e5, G = E / (2.0 * (1.0 + nu));
+  const double t = std::tan(phi * M_PI / 180.0), root = std::sqrt(9.0 + 12.0 * t * t);
+  const double yield_shear = 3.0 * c / root + 3.0 * t / root * p0;
+  const double rate = 1.0 / lattice_moment(W), dt = 1e-4;  // γ̇ m = 1/s
+  for (const double tau : {0.0, 1e-3}) {
+    DruckerPrager::Params params{};
+    params.density = kRho, params.young_modulus = E, params.poisson_ratio = nu, params.friction_angle = phi;
+    params.cohesion = c, params.viscoplastic_relaxation_time = tau;
+    const DruckerPrager model(params);
+    Particles p = test::lattice(kN, kDx, kRho);
+    for (std::size_t i = 0; i < p.size(); ++i) p.vx[i] = 0.5 * rate * p.y[i], p.vy[i] = 0.5 * rate * p.x[i];
+    for (std::size_t i = 0; i < p.soil_count; ++i) p.state[i].stress = -p0 * Mat3::Identity();
+    NeighbourList nl;
+    nl.build(p.x, p.y, W);
+    compute_velocity_gradient(p, nl);
+    for (int k = 0; k < 1000; ++k) update_stress(model, p, dt);  // 0.1 s: yield at 1.6 ms, then 98 τ
+    const double expected = yield_shear + G * 1.0 * tau;
+    for (std::size_t i = 0; i < p.soil_count; ++i) {
+      if (!interior(p, i)) continue;
+      CHECK(p.sxy[i] == Approx(expected).epsilon(1e-9));
+      CHECK(-(p.sxx[i] + p.syy[i] + p.state[i].stress(2, 2)) / 3.0 == Approx(p0).epsilon(1e-12));
+    }
+  }
+}

@@ -9,6 +9,7 @@
 #include "constitutive/material_description.h"
 #include "constitutive/material_limits.h"
 #include "constitutive/parameters.h"
+#include "verification/driver/rate_independence.h"
 
 namespace soilsph::verification {
 
@@ -42,7 +43,10 @@ Material read_programme_material(const toml::table& root, const std::string& pat
   }
   const toml::table* table = holder["material"].as_table();
   if (!table) throw ParameterError(source + ": no [material] table");
-  return blaming_overrides(overrides, [&] { return read_material(TableReader(*table, source, "material")); });
+  const Material material =
+      blaming_overrides(overrides, [&] { return read_material(TableReader(*table, source, "material")); });
+  warn_if_rate_dependent(material, source);
+  return material;
 }
 
 /// K0 when none is given: Jaky's 1 − sin φ, times OCR^sin φ on unloading (Mayne & Kulhawy 1982), for
