@@ -4,7 +4,7 @@
 Run with Debian's /usr/bin/python3 (matplotlib, numpy).
 
     scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--block paper|fixed]
-                                    [--smoothing-length MM] [--jobs 2] [--reuse]
+                                    [--smoothing-length MM] [--models D-P,MCC] [--jobs 2] [--reuse]
     scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2] [--integrators shipped,implicit]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
     scripts/sph_study.py cut        [--out DIR] [--heights 3,4,...] [--spacings 2,1]
@@ -13,7 +13,7 @@ Run with Debian's /usr/bin/python3 (matplotlib, numpy).
 Every run goes to the scene's end time or to rest (the scene's stop_at_rest). Runs go `--jobs` at a
 time with one thread each (results do not depend on the thread count; wall times are one core's).
 
-resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes. Writes DIR/resolution.csv (one row
+resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes (--models: some of them). Writes DIR/resolution.csv (one row
   per run: the summary's fields) and DIR/resolution.md: runout, height and repose angle, their
   differences from the finest run, Richardson's observed order and extrapolated value where three
   spacings converge monotonically, and wall time; DIR/resolution.png: error against wall time,
@@ -151,6 +151,10 @@ def block_overrides(scene, spacing_m, block, smoothing_m=None):
 def resolution(args):
     out = pathlib.Path(args.out)
     spacings = [float(s) for s in args.spacings.split(",")]
+    unknown = [label for label in args.models.split(",") if label not in SCENES]
+    if unknown:
+        sys.exit(f"error: --models {args.models}: unknown {', '.join(unknown)} (allowed: {', '.join(SCENES)})")
+    scenes = {label: SCENES[label] for label in args.models.split(",")}
     smoothing_mm = args.smoothing_length  # h fixed at every spacing, or None
     if smoothing_mm is not None:
         for s in spacings:
@@ -162,7 +166,7 @@ def resolution(args):
                               None if smoothing_mm is None else smoothing_mm / 1000) + args.set,
               {"model_label": label, "spacing_mm": s, "block": args.block,
                "smoothing_length_mm": "" if smoothing_mm is None else smoothing_mm})
-             for s in sorted(spacings) for label, scene in SCENES.items()]  # finest first: longest first
+             for s in sorted(spacings) for label, scene in scenes.items()]  # finest first: longest first
     rows = run_all(specs, out, args.jobs, args.reuse)
     for r in rows:
         if r["status"] == "ok":
@@ -175,11 +179,11 @@ def resolution(args):
              else "shipped scenes")
     if smoothing_mm is not None:
         title += f", h = {smoothing_mm:g} mm at every spacing"
-    lines = [f"# Resolution study (soilsph collapse, {title}, to rest or 1 s)", "",
+    lines = [f"# Resolution study (soilsph collapse, {title}, to rest or the end time)", "",
              "Differences from the finest run in brackets (per cent; degrees for the angle).", "",
              f"| model | spacing (mm) | {header} | t end (s) | steps | wall (s) |",
              "|---|---|" + "---|" * len(measures) + "---|---|---|"]
-    for label in SCENES:
+    for label in scenes:
         model_rows = sorted((r for r in rows if r["model_label"] == label and r["status"] == "ok"),
                             key=lambda r: -r["spacing_mm"])
         if not model_rows:
@@ -462,6 +466,7 @@ def main():
         p.add_argument("--reuse", action="store_true", help="keep runs whose folder has a summary.json")
         if name == "resolution":
             p.add_argument("--spacings", default="4,2,1,0.5", help="particle spacings in mm")
+            p.add_argument("--models", default=",".join(SCENES), help="comma-separated scene labels (D-P, MCC)")
             p.add_argument("--smoothing-length", type=float, default=None,
                            help="mm: keep h fixed (smoothing_ratio = h/dp, 1 to 2) instead of h/dp")
             p.add_argument("--block", choices=("paper", "fixed"), default="paper",
