@@ -219,6 +219,25 @@ TEST_CASE("soilsph material gives one line for a derived constant that overflows
   CHECK(std::count(message.begin(), message.end(), '\n') == 1);
 }
 
+TEST_CASE("a viscoplastic relaxation time: material prints G tau, point warns that it does not apply",
+          "[cli]") {
+  TempDir dir;
+  const fs::path material = dir.path / "viscous.toml";
+  std::ofstream(material)
+      << "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\nyoung_modulus = 2.6e6\n"
+         "poisson_ratio = 0.3\nfriction_angle = 30.0\nviscoplastic_relaxation_time = 1e-3\n";
+  // G = E / (2(1 + ν)) = 1 MPa, so G τ = 1000 Pa s.
+  const fs::path out = dir.path / "out";
+  REQUIRE(std::system((kExe + " material " + material.string() + " > " + out.string()).c_str()) == 0);
+  CHECK(read(out).find("slow-flow viscosity G tau = 1000 Pa s") != std::string::npos);
+  const fs::path log = dir.path / "log";
+  REQUIRE(point(material.string() + " --test triaxial-drained --strain-max 0.01 --increments 2 --out " +
+                    (dir.path / "curve.csv").string(),
+                log) == 0);
+  CHECK(read(log).find("viscoplastic_relaxation_time is ignored here: the material-point driver is "
+                       "rate-independent") != std::string::npos);
+}
+
 // The header names everything needed to run the curve again; the material line is TOML that reads
 // back to the material the run used (the file after --set, the integrator that ran, defaults filled).
 TEST_CASE("soilsph point records version, command, material, integrator and test in its header", "[cli]") {
