@@ -21,27 +21,11 @@ static_assert(ConstitutiveModel<LinearElastic>);
 static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay> && PlasticModel<MohrCoulomb>);
 
 /// Every key a `[material]` table may hold, whichever model it selects.
-inline constexpr std::string_view kMaterialKeys[] = {"model",
-                                                     "density",
-                                                     "young_modulus",
-                                                     "poisson_ratio",
-                                                     "friction_angle",
-                                                     "cohesion",
-                                                     "dilatancy_angle",
-                                                     "compression_index",
-                                                     "swelling_index",
-                                                     "initial_void_ratio",
-                                                     "elasticity",
-                                                     "elastic_pressure_floor",
-                                                     "integrator",
-                                                     "substep_tolerance",
-                                                     "implicit_alpha",
-                                                     "implicit_tolerance",
-                                                     "plastic_potential",
-                                                     "tension_cutoff",
-                                                     "dilatancy_cutoff",
-                                                     "minimum_preconsolidation",
-                                                     "viscoplastic_relaxation_time"};
+inline constexpr std::string_view kMaterialKeys[] = {
+    "model", "density", "young_modulus", "poisson_ratio", "friction_angle", "cohesion", "dilatancy_angle",
+    "compression_index", "swelling_index", "initial_void_ratio", "elasticity", "elastic_pressure_floor",
+    "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential",
+    "tension_cutoff", "dilatancy_cutoff", "minimum_preconsolidation", "viscoplastic_relaxation_time"};
 
 /// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
 /// other models are reported on stderr as ignored; keys no model knows are errors.

@@ -17,9 +17,7 @@ inline constexpr double kMaxYoungModulus = 1e12;
 /// Largest viscoplastic relaxation time, s: far beyond any run (τ → ∞ is elasticity).
 inline constexpr double kMaxRelaxationTime = 1e3;
 
-inline Range relaxation_time_range() {
-  return Range::closed(0.0, kMaxRelaxationTime);
-}
+inline Range relaxation_time_range() { return Range::closed(0.0, kMaxRelaxationTime); }
 inline Range young_modulus_range() { return Range::open_closed(0.0, kMaxYoungModulus); }
 inline Range stress_range() { return Range::open_closed(0.0, kMaxStress); }  ///< (0, kMaxStress]
 
