@@ -4,7 +4,7 @@
 Run with Debian's /usr/bin/python3 (matplotlib, numpy).
 
     scripts/sph_study.py resolution [--out DIR] [--spacings 4,2,1,0.5] [--block paper|fixed]
-                                    [--smoothing-length MM] [--models D-P,MCC] [--jobs 2] [--reuse]
+                                    [--smoothing-length MM] [--models D-P,MCC,MCC-viscous] [--jobs 2] [--reuse]
     scripts/sph_study.py cfl        [--out DIR] [--cfls 0.2,0.3,...] [--spacing 2] [--integrators shipped,implicit]
     scripts/sph_study.py integrator [--out DIR] [--spacing 1]
     scripts/sph_study.py cut        [--out DIR] [--heights 3,4,...] [--spacings 2,1]
@@ -13,7 +13,8 @@ Run with Debian's /usr/bin/python3 (matplotlib, numpy).
 Every run goes to the scene's end time or to rest (the scene's stop_at_rest). Runs go `--jobs` at a
 time with one thread each (results do not depend on the thread count; wall times are one core's).
 
-resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes (--models: some of them). Writes DIR/resolution.csv (one row
+resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes (--models: some of them, or the variant
+  MCC-viscous: the MCC scene with viscoplastic_relaxation_time = 1.16e-4 s, to rest within 3 s). Writes DIR/resolution.csv (one row
   per run: the summary's fields) and DIR/resolution.md: runout, height and repose angle, their
   differences from the finest run, Richardson's observed order and extrapolated value where three
   spacings converge monotonically, and wall time; DIR/resolution.png: error against wall time,
@@ -59,6 +60,12 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 # The binary: $SOILSPH_BINARY (the tests give their build's), else the README's build.
 SOILSPH = pathlib.Path(os.environ.get("SOILSPH_BINARY", ROOT / "build" / "apps" / "soilsph" / "soilsph"))
 SCENES = {"D-P": "collapse-dp", "MCC": "collapse-mcc"}
+# Variants the resolution study runs on request (--models): label -> (run prefix, scene, --set values).
+# MCC-viscous: the paper's MCC scene with the Duvaut-Lions relaxation whose deposit converges,
+# G tau = 45 Pa s on Table 1's E; it rests after about 1.3 s (docs/sph.md, "A material length for MCC").
+VARIANTS = {"MCC-viscous": ("collapse-mcc-viscous", "collapse-mcc",
+                            ["material.viscoplastic_relaxation_time=1.16e-4", "scene.end_time=3"])}
+RESOLUTION_MODELS = {**{label: (scene, scene, []) for label, scene in SCENES.items()}, **VARIANTS}
 MEASURES = (("runout_m", "runout", 100.0, "cm"), ("runout_thick_m", "runout where H0/10 thick", 100.0, "cm"),
             ("height_m", "height", 100.0, "cm"), ("repose_angle_deg", "repose angle", 1.0, "deg"))
 # --block fixed: the same measures from the walls' faces to the cells' edges (each length + dp).
@@ -151,22 +158,23 @@ def block_overrides(scene, spacing_m, block, smoothing_m=None):
 def resolution(args):
     out = pathlib.Path(args.out)
     spacings = [float(s) for s in args.spacings.split(",")]
-    unknown = [label for label in args.models.split(",") if label not in SCENES]
+    unknown = [label for label in args.models.split(",") if label not in RESOLUTION_MODELS]
     if unknown:
-        sys.exit(f"error: --models {args.models}: unknown {', '.join(unknown)} (allowed: {', '.join(SCENES)})")
-    scenes = {label: SCENES[label] for label in args.models.split(",")}
+        sys.exit(f"error: --models {args.models}: unknown {', '.join(unknown)} "
+                 f"(allowed: {', '.join(RESOLUTION_MODELS)})")
+    scenes = {label: RESOLUTION_MODELS[label] for label in args.models.split(",")}
     smoothing_mm = args.smoothing_length  # h fixed at every spacing, or None
     if smoothing_mm is not None:
         for s in spacings:
             if not 1.0 <= smoothing_mm / s <= 2.0:
                 sys.exit(f"error: --smoothing-length {smoothing_mm:g} mm at spacing {s:g} mm is "
                          f"h/dp = {smoothing_mm / s:.3g} (allowed: 1 to 2, the scenes' smoothing_ratio range)")
-    specs = [(f"{scene}-{s:g}mm", scene,
-              block_overrides(scene, s / 1000, args.block,
-                              None if smoothing_mm is None else smoothing_mm / 1000) + args.set,
+    specs = [(f"{prefix}-{s:g}mm", scene,
+              variant + block_overrides(scene, s / 1000, args.block,
+                                        None if smoothing_mm is None else smoothing_mm / 1000) + args.set,
               {"model_label": label, "spacing_mm": s, "block": args.block,
                "smoothing_length_mm": "" if smoothing_mm is None else smoothing_mm})
-             for s in sorted(spacings) for label, scene in scenes.items()]  # finest first: longest first
+             for s in sorted(spacings) for label, (prefix, scene, variant) in scenes.items()]  # finest first
     rows = run_all(specs, out, args.jobs, args.reuse)
     for r in rows:
         if r["status"] == "ok":
@@ -466,7 +474,8 @@ def main():
         p.add_argument("--reuse", action="store_true", help="keep runs whose folder has a summary.json")
         if name == "resolution":
             p.add_argument("--spacings", default="4,2,1,0.5", help="particle spacings in mm")
-            p.add_argument("--models", default=",".join(SCENES), help="comma-separated scene labels (D-P, MCC)")
+            p.add_argument("--models", default=",".join(SCENES),
+                           help=f"comma-separated labels: {', '.join(RESOLUTION_MODELS)} (default: the shipped scenes)")
             p.add_argument("--smoothing-length", type=float, default=None,
                            help="mm: keep h fixed (smoothing_ratio = h/dp, 1 to 2) instead of h/dp")
             p.add_argument("--block", choices=("paper", "fixed"), default="paper",

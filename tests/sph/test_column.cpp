@@ -91,6 +91,36 @@ TEST_CASE("the MCC collapse runs to rest at 2 mm within the scaling-law bands", 
 }
 
 namespace {
+/// The deposit of the MCC scene with a viscoplastic relaxation time, run to rest at `spacing`.
+DepositMetrics viscous_mcc_deposit(double spacing) {
+  const Scene scene = test::shipped_scene(
+      "collapse-mcc", {"scene.particle_spacing=" + std::to_string(spacing), "scene.end_time=3",
+                       "material.viscoplastic_relaxation_time=1.16e-4"});
+  const RunResult r = run_scene(scene);
+  REQUIRE(all_finite(r.particles));
+  CHECK(r.stats.stopped_at_rest);
+  CHECK(r.stats.guard_corrections == 0);
+  const Particles& p = r.particles;
+  return measure_deposit(std::span(p.x.data(), p.soil_count), std::span(p.y.data(), p.soil_count), 0.04, spacing,
+                         0.1 * 0.06);
+}
+}  // namespace
+
+// A softening soil with a material length has a deposit that does not depend on the particles once
+// they resolve that length (the rate-independent MCC's does: its shear bands are as thin as the
+// spacing; docs/sph.md, Resolution). With G tau = 45 Pa s the paper's MCC column converges from 4 mm
+// on (docs/sph.md, "A material length for MCC"): the runouts and the repose angle of the 4 and 2 mm
+// runs within issue #9's targets (2 %, 1 deg); the height within 3 % (2.8 % measured: at 4 mm the column is 11
+// particles wide). Rate-independent, the same two runs differ by 2.6 deg in the angle and 4.9 % in the tip.
+TEST_CASE("a viscous MCC column's deposit converges from 4 to 2 mm", "[column][collapse]") {
+  const DepositMetrics coarse = viscous_mcc_deposit(0.004), fine = viscous_mcc_deposit(0.002);
+  CHECK(coarse.runout_m == Approx(fine.runout_m).epsilon(0.02));
+  CHECK(coarse.runout_thick_m == Approx(fine.runout_thick_m).epsilon(0.02));
+  CHECK(coarse.height_m == Approx(fine.height_m).epsilon(0.03));
+  CHECK(coarse.repose_angle_deg == Approx(fine.repose_angle_deg).margin(1.0));
+}
+
+namespace {
 /// How far the cut's face moved: the fixed wall is at x = W, the face started at x = 0.
 double face_displacement(const Particles& p) {
   double xmin = 1.0;
