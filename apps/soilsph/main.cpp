@@ -40,8 +40,8 @@ using soilsph::cli::one_line;
 int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i)
     soilsph::cli::g_invocation += (i ? " " : "") + soilsph::cli::shell_quoted(i ? argv[i] : "soilsph");
-  CLI::App app{"soilsph: elastic-plastic soil models (Drucker-Prager, Modified Cam-Clay), their "
-               "material-point verification, and SPH soil-collapse simulation"};
+  CLI::App app{"soilsph: elastic-plastic soil models (Drucker-Prager, Modified Cam-Clay, Mohr-Coulomb), "
+               "their material-point verification, and SPH soil-collapse simulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("soilsph ") + soilsph::kVersion);
   soilsph::cli::add_material_command(app);

@@ -41,7 +41,7 @@ std::filesystem::path write_file(const std::string& name, const std::string& tex
 const std::string& kLinear = fixtures::kLinearElasticToml;
 }  // namespace
 
-TEST_CASE("every shipped programme runs with its integrator and with CVODE, and they agree", "[programme]") {
+TEST_CASE("every shipped programme runs with implicit and with CVODE, and they agree", "[programme]") {
   for (const auto& entry : std::filesystem::directory_iterator(kSource + "/data/programmes")) {
     const std::string path = entry.path().string();
     INFO(path);
