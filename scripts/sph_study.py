@@ -14,10 +14,10 @@ Every run goes to the scene's end time or to rest (the scene's stop_at_rest). Ru
 time with one thread each (results do not depend on the thread count; wall times are one core's).
 
 resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes (--models: some of them, or the variant
-  MCC-viscous: the MCC scene with viscoplastic_relaxation_time = 1.16e-4 s, to rest within 3 s). Writes DIR/resolution.csv (one row
-  per run: the summary's fields) and DIR/resolution.md: runout, height and repose angle, their
-  differences from the finest run, Richardson's observed order and extrapolated value where three
-  spacings converge monotonically, and wall time; DIR/resolution.png: error against wall time,
+  MCC-viscous: the MCC scene with viscoplastic_relaxation_time = 1.16e-4 s, to rest within 3 s).
+  Writes DIR/resolution.csv (one row per run: the summary's fields) and DIR/resolution.md: runout,
+  height and repose angle, their differences from the finest run, Richardson's observed order and
+  extrapolated value where three spacings converge monotonically, and wall time; DIR/resolution.png: error against wall time,
   log-log, per model and measure (the SPH counterpart of the work-precision figure).
   --block fixed refines one W x H block: the column keys put particle centres on the edges of W x H
   (the paper's layout), a block of (W + dp) x (H + dp) that shrinks as dp does, so each run takes
@@ -475,7 +475,8 @@ def main():
         if name == "resolution":
             p.add_argument("--spacings", default="4,2,1,0.5", help="particle spacings in mm")
             p.add_argument("--models", default=",".join(SCENES),
-                           help=f"comma-separated labels: {', '.join(RESOLUTION_MODELS)} (default: the shipped scenes)")
+                           help=f"comma-separated labels: {', '.join(RESOLUTION_MODELS)} "
+                                "(default: the shipped scenes)")
             p.add_argument("--smoothing-length", type=float, default=None,
                            help="mm: keep h fixed (smoothing_ratio = h/dp, 1 to 2) instead of h/dp")
             p.add_argument("--block", choices=("paper", "fixed"), default="paper",

@@ -110,8 +110,9 @@ DepositMetrics viscous_mcc_deposit(double spacing) {
 // they resolve that length (the rate-independent MCC's does: its shear bands are as thin as the
 // spacing; docs/sph.md, Resolution). With G tau = 45 Pa s the paper's MCC column converges from 4 mm
 // on (docs/sph.md, "A material length for MCC"): the runouts and the repose angle of the 4 and 2 mm
-// runs within issue #9's targets (2 %, 1 deg); the height within 3 % (2.8 % measured: at 4 mm the column is 11
-// particles wide). Rate-independent, the same two runs differ by 2.6 deg in the angle and 4.9 % in the tip.
+// runs within issue #9's targets (2 %, 1 deg); the height within 3 % (2.8 % measured: at 4 mm the
+// column is 11 particles wide). Rate-independent, the same two runs differ by 2.6 deg in the angle
+// and 4.9 % in the tip.
 TEST_CASE("a viscous MCC column's deposit converges from 4 to 2 mm", "[column][collapse]") {
   const DepositMetrics coarse = viscous_mcc_deposit(0.004), fine = viscous_mcc_deposit(0.002);
   CHECK(coarse.runout_m == Approx(fine.runout_m).epsilon(0.02));
