@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "constitutive/admissible_state.h"
 #include "sph/geometry/lattice.h"
 #include "sph/geometry/surface.h"
 #include <sstream>
@@ -16,15 +17,6 @@ namespace {
 template <class Model>
 double initial_preconsolidation(const Model& model, const Mat3& sigma, const InitialConditions& c) {
   return model.initial_preconsolidation(sigma, c.overconsolidation_ratio, c.preconsolidation_floor);
-}
-
-template <class Model>
-bool inside_yield_surface(const Model& model, const State& s) {
-  if constexpr (requires { model.yield(s.stress, s.pc); }) {
-    return model.normalized_yield(s.stress, s.pc) <= 1e-9;
-  } else {
-    return true;
-  }
 }
 
 /// σ_v = −ρ|g| (surface − height), the weight of the soil between the particle's height and the free
@@ -179,7 +171,7 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
             const double overburden = several && excess[i] != 0.0 ? rho + excess[i] / (surface - height) : rho;
             s.stress = geostatic_stress(g, overburden, k0, surface, height);
             s.pc = initial_preconsolidation(model, s.stress, scene.initial);
-            if (!inside_yield_surface(model, s)) {
+            if (!admissible_state(model, s)) {
               std::ostringstream msg;
               msg << scene.source << ": the geostatic stress at (" << p.x[i] << ", " << p.y[i] << ") m"
                   << " lies outside the yield surface of "
@@ -202,7 +194,7 @@ double smallest_admissible_lateral_stress_ratio(const Material& material, const 
           s.stress = geostatic_stress(geometry, model.params().density, k0, geometry.surface_level,
                                       geometry.base_level);
           s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0, {}, InitialStress::FlatSurface, {}});
-          return inside_yield_surface(model, s);
+          return admissible_state(model, s);
         };
         double lo = 0.0, hi = 1.0;  // inadmissible at lo (or lo = 0), admissible at hi
         if (admissible(1e-12)) return 0.0;

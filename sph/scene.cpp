@@ -175,6 +175,13 @@ LateralStressRatio lateral_stress_ratio_of(const Material& material, const Geome
   return {nu / (1.0 - nu), smallest_admissible_lateral_stress_ratio(material, geometry)};
 }
 
+/// The K0 a column may be given: below 1 (the active side) and at least the bound its yield surface
+/// sets (0: none). A cone too slender for any K0 < 1 (cohesionless D-P with φ → 0) holds K0 = 1 alone.
+Range lateral_stress_ratio_range(double bound) {
+  if (!(bound > 0.0)) return Range::open(0.0, 1.0);
+  return bound < 1.0 ? Range::closed_open(bound, 1.0) : Range::closed(1.0, 1.0);
+}
+
 InitialConditions read_initial(const TableReader& t, const std::vector<Material>& materials,
                                const std::vector<std::string>& names, const Geometry& geometry) {
   // Default K0 = ν/(1−ν): the lateral stress of an elastic column under its own weight between
@@ -197,10 +204,10 @@ InitialConditions read_initial(const TableReader& t, const std::vector<Material>
                 << ", the smallest the yield surface holds at the column's base (the elastic nu/(1-nu) = "
                 << k0[0].elastic << " lies outside it)\n";
     c.lateral_stress_ratio = t.number_or("lateral_stress_ratio", k0[0].preferred(),
-                                         bound > 0.0 ? Range::closed_open(bound, 1.0) : Range::open(0.0, 1.0));
+                                         lateral_stress_ratio_range(bound));
     c.material_lateral_stress_ratio = {c.lateral_stress_ratio};
   } else if (t.has("lateral_stress_ratio")) {  // one K0 for all; without the key each its own (not recorded)
-    c.lateral_stress_ratio = t.number("lateral_stress_ratio", bound > 0.0 ? Range::closed_open(bound, 1.0) : Range::open(0.0, 1.0));
+    c.lateral_stress_ratio = t.number("lateral_stress_ratio", lateral_stress_ratio_range(bound));
     c.material_lateral_stress_ratio.assign(materials.size(), c.lateral_stress_ratio);
   } else {
     for (std::size_t k = 0; k < materials.size(); ++k) {

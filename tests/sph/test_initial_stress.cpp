@@ -124,3 +124,21 @@ TEST_CASE("[initial] stress is validated", "[scene][initial][surface]") {
   CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", {R"(initial.stress="local")"}),
                     Contains("[initial] stress") && Contains("local-surface"));
 }
+
+TEST_CASE("a cohesionless D-P of vanishing friction takes the one K0 its cone holds", "[scene][initial]") {
+  // The input fuzzer's last finding: φ = 3.5e-29°, c = 0 defaulted K0 to 1 (the isotropic state, on
+  // the degenerate cone's axis) and then refused it at points where σ = vI has a round-off deviator.
+  const std::vector<std::string> slender = {"material.friction_angle=3.5e-29", "material.cohesion=0",
+                                            "scene.particle_spacing=0.004"};
+  const Scene scene = test::shipped_scene("collapse-dp", slender);
+  CHECK(scene.initial.material_lateral_stress_ratio[0] == 1.0);
+  const Particles p = geostatic(scene);
+  for (std::size_t i = 0; i < p.soil_count; ++i) REQUIRE(p.sxx[i] == p.syy[i]);
+  // Given explicitly, K0 = 1 is taken; any other K0 is outside that cone, and the error says which.
+  std::vector<std::string> given = slender;
+  given.push_back("initial.lateral_stress_ratio=1");
+  CHECK_NOTHROW(geostatic(test::shipped_scene("collapse-dp", given)));
+  given.back() = "initial.lateral_stress_ratio=0.999999";
+  CHECK_THROWS_WITH(test::shipped_scene("collapse-dp", given),
+                    Contains("lateral_stress_ratio") && Contains("1 <= value <= 1"));
+}

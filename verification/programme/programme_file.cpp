@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "constitutive/admissible_state.h"
 #include "constitutive/material_description.h"
 #include "constitutive/material_limits.h"
 #include "constitutive/parameters.h"
@@ -65,17 +66,6 @@ double default_lateral_stress_ratio(const Material& material, double ocr) {
       material);
 }
 
-bool inside_yield_surface(const Material& material, const State& s) {
-  return std::visit(
-      [&s](const auto& model) {
-        if constexpr (requires { model.normalized_yield(s.stress, s.pc); })
-          return model.normalized_yield(s.stress, s.pc) <= 1e-9;
-        else
-          return true;
-      },
-      material);
-}
-
 State read_initial(const TableReader& t, const Material& material, std::string& text) {
   const double ocr = t.number_or("ocr", 1.0, point_limits::ocr());
   if (ocr != 1.0 && !has_preconsolidation(material))
@@ -99,7 +89,7 @@ State read_initial(const TableReader& t, const Material& material, std::string& 
   }
   s.pc = initial_preconsolidation(material, s.stress, ocr);
   if (has_preconsolidation(material)) out << ", ocr = " << exact_number(ocr) << " (p_c = " << exact_number(s.pc) << " Pa)";
-  if (!inside_yield_surface(material, s))
+  if (!std::visit([&s](const auto& model) { return admissible_state(model, s); }, material))
     t.fail(t.has("p") ? "p" : "lateral_stress_ratio", "gives an initial state outside the yield surface");
   t.reject_unknown_keys();
   text = out.str();
