@@ -238,10 +238,12 @@ void apply_override(toml::table& root, std::string_view assignment) {
   // number from 1, as messages label them ("[regions #2]"); the last name is the key set. A table
   // named on the way that does not exist is created.
   std::vector<std::string> path;
-  for (std::size_t from = 0; from < eq;) {
+  for (std::size_t from = 0;;) {
     const std::size_t to = std::min(assignment.find('.', from), eq);
     path.emplace_back(assignment.substr(from, to - from));
+    // Also the name after a last dot: "material.=1" names no key (it once set [material] itself).
     if (path.back().empty()) throw ParameterError(option + ": an empty name in the key path");
+    if (to == eq) break;
     from = to + 1;
   }
   const std::string key = path.back();

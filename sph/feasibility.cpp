@@ -21,6 +21,12 @@ std::string wave_speed_keys(const Material& material) {
              ? "[material] young_modulus, poisson_ratio and density"
              : "[material] swelling_index, initial_void_ratio, poisson_ratio and density at the base pressure";
 }
+
+/// The keys that set the particle counts: the spacing and the geometry's size.
+std::string particle_count_keys(const Geometry& g) {
+  return g.column ? "[scene] particle_spacing, column_width, column_height and floor_length"
+                  : "[scene] particle_spacing and the [[regions]] and [[boundaries]]";
+}
 }  // namespace
 
 RunEstimate estimate_run(const Scene& scene) {
@@ -86,7 +92,7 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
   if (e.memory_bytes > memory_available) {
     msg << "the scene needs about " << e.memory_bytes / 1e9 << " GB for " << static_cast<double>(e.soil_particles)
         << " soil and " << static_cast<double>(e.boundary_particles) << " boundary particles; this machine has "
-        << memory_available / 1e9 << " GB (a larger [scene] particle_spacing)";
+        << memory_available / 1e9 << " GB (particles from " << particle_count_keys(g) << ")";
     refuse(scene, msg.str());
   }
   const double limit = scene.limits.max_run_hours * 3600.0;
@@ -94,7 +100,8 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
     msg << "the run would take about " << human_duration(e.seconds) << " (" << e.steps << " steps of "
         << e.time_step << " s to [scene] end_time = " << g.end_time << " s with "
         << static_cast<double>(e.soil_particles) << " soil and " << static_cast<double>(e.boundary_particles)
-        << " boundary particles from [scene] particle_spacing and the geometry; the step is [numerics] cfl = " << scene.numerics.cfl << " times h over the P-wave speed c = "
+        << " boundary particles from " << particle_count_keys(g) << "; the step is [numerics] cfl = " << scene.numerics.cfl
+        << " times h over the P-wave speed c = "
         << c << " m/s of " << wave_speed_keys(scene.material) << "), more than [scene] max_run_hours = "
         << scene.limits.max_run_hours << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
     refuse(scene, msg.str());

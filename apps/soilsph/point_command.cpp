@@ -109,15 +109,15 @@ std::string integrator_label(const PointOptions& o, const std::string& integrato
   return o.integrator.empty() ? "integrator " + integrator + " (the material's)" : "--integrator " + integrator;
 }
 
+/// A name given with --integrator (an empty one too: it is not "the material's key").
 void check_integrator(const std::string& name) {
-  if (name.empty()) return;
   std::string allowed;
   for (std::string_view scheme : kIntegratorNames) {
     if (name == scheme) return;
     allowed += std::string(scheme) + ", ";
   }
   if (name == verification::kReferenceIntegrator) return;
-  throw ParameterError("--integrator " + name + ": unknown integrator (allowed: " + allowed +
+  throw ParameterError("--integrator " + (name.empty() ? std::string("\"\"") : name) + ": unknown integrator (allowed: " + allowed +
                        std::string(verification::kReferenceIntegrator) + ")");
 }
 
@@ -195,7 +195,6 @@ void run_programme_file(const PointOptions& o, bool options_given) {
 }
 
 void run(const PointOptions& o, bool legs_given, bool test_options_given) {
-  check_integrator(o.integrator);
   if (o.path_tolerance > 0.0 && o.integrator == verification::kReferenceIntegrator)
     throw ParameterError("--path-tolerance does not apply to --integrator cvode (the reference holds the "
                          "imposed stresses throughout)");
@@ -257,7 +256,7 @@ void add_point_command(CLI::App& app) {
                          ->transform(whole_number_in(1, limits::kMaxIncrements));
   std::string integrators;
   for (std::string_view name : kIntegratorNames) integrators += std::string(name) + ", ";
-  cmd->add_option("--integrator", o->integrator,
+  auto* integrator = cmd->add_option("--integrator", o->integrator,
                   "stress integrator: " + integrators +
                       "or cvode (the reference); replaces the material's (default: the material's integrator key)");
   cmd->add_option("--path-tolerance", o->path_tolerance,
@@ -268,7 +267,8 @@ void add_point_command(CLI::App& app) {
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,
                   "override a material key, e.g. --set material.friction_angle=30 (repeatable)");
-  cmd->callback([o, strain_max, increments, test, strain_path, p_initial, ocr] {
+  cmd->callback([o, strain_max, increments, test, strain_path, p_initial, ocr, integrator] {
+    if (integrator->count() > 0) check_integrator(o->integrator);
     run(*o, strain_max->count() + increments->count() > 0,
         test->count() + strain_path->count() + p_initial->count() + ocr->count() > 0);
   });

@@ -76,13 +76,17 @@ PlasticRate plastic_rate(const Model& model, const Mat3& sigma, double pc, const
   return {elastic - d_lambda * D_ng, d_plastic, model.harden(pc, d_plastic), d_lambda};
 }
 
-/// Pegasus (modified regula falsi) root of g on [a, b] with g(a) < 0 < g(b).
+/// Pegasus (modified regula falsi) root of g on [a, b] with g(a) < 0 < g(b). Converged when |g| ≤ FTOL
+/// or, where g's round-off exceeds FTOL (a surface thinner than the stress's round-off: D-P with
+/// φ → 0 at high p), when the bracket has shrunk to the round-off of a fraction of the increment
+/// (absolute: the root may be 0, a start on the surface to round-off).
 template <class G>
 double pegasus(const G& g, double a, double b, double ga, double gb) {
   for (int it = 0; it < kMaxPegasusIterations; ++it) {
     const double c = b - gb * (b - a) / (gb - ga);
     const double gc = g(c);
     if (std::abs(gc) <= kYieldTolerance) return c;
+    if (std::abs(b - a) <= 4.0 * std::numeric_limits<double>::epsilon()) return c;
     if (gc * gb < 0.0) {
       a = b;
       ga = gb;

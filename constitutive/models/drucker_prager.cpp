@@ -76,9 +76,13 @@ double DruckerPrager::normalized_yield(const Mat3& sigma, double) const {
 }
 
 namespace {
-/// ∂√J2/∂σ = s / (2√J2), zero at the apex.
+/// ∂√J2/∂σ = s / (2√J2), zero at the apex. s keeps no trace: where √J2 is tiny against |p| (a cone
+/// of φ → 0 at 100 kPa is 1e-6 Pa wide) σ − p I carries a round-off trace ~ε|p|, which the division
+/// would turn into a volumetric flow of relative size ε|p|/√J2 (an undrained D-P path at φ = 1e-9°
+/// lost 1.5e-6 of p' in `explicit`, found by the input fuzzer).
 Mat3 sqrt_j2_gradient(const Mat3& sigma) {
-  const Mat3 s = deviator(sigma);
+  Mat3 s = deviator(sigma);
+  s.diagonal().array() -= s.trace() / 3.0;
   const double sqrt_j2 = std::sqrt(0.5 * ddot(s, s));
   return sqrt_j2 > kApexSqrtJ2 ? Mat3(s / (2.0 * sqrt_j2)) : Mat3(Mat3::Zero());
 }

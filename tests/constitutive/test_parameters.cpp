@@ -179,6 +179,7 @@ material = "sand"
   CHECK_THROWS_WITH(apply_override(root, "materials.clay.cohesion.x=1"),
                     Contains("[materials.clay.cohesion] is not a table"));
   CHECK_THROWS_WITH(apply_override(root, "materials..cohesion=1"), Contains("an empty name in the key path"));
+  CHECK_THROWS_WITH(apply_override(root, "material.=1"), Contains("--set material.=1: an empty name in the key path"));
 }
 
 TEST_CASE("a bad value given with --set is blamed on the option, not on the file", "[parameters]") {

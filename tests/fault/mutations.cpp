@@ -208,6 +208,9 @@ struct Spec {
     return std::pair<long long, long long>(std::numeric_limits<long long>::min(),
                                            std::numeric_limits<long long>::max());
   };
+  /// Number: a vector [x, y] of finite components and magnitude ≤ vector_magnitude is admissible
+  /// too (gravity's direction); 0: numbers only.
+  double vector_magnitude = 0.0;
 };
 
 Interval open(double lo, double hi) {
@@ -420,8 +423,12 @@ std::vector<Spec> make_specs() {
                {"frame_interval"},
                {},
                positive});
-  s.push_back(
-      {"scene", "gravity", Type::Number, true, {"-1e-9", "0", "1e4", "1e308", "1e30"}, {}, {}, non_negative});
+  {
+    Spec gravity{"scene", "gravity", Type::Number, true, {"-1e-9", "0", "1e4", "1e308", "1e30", "[1e4, 1.0]"},
+                 {},      {},        non_negative};
+    gravity.vector_magnitude = 1e4;  // docs/scenes.md: g, or [gx, gy] pointing anywhere
+    s.push_back(gravity);
+  }
   s.push_back({"scene",
                "wall_withdrawal",
                Type::String,
@@ -589,6 +596,13 @@ bool material_key_used(const toml::table& doc, const std::string& key) {
 Expect judge(const Spec& spec, const toml::node& node, const toml::table& doc) {
   switch (spec.type) {
     case Type::Number: {
+      if (const toml::array* a = node.as_array(); a && spec.vector_magnitude > 0.0) {
+        const std::optional<double> x = a->size() == 2 ? (*a)[0].value<double>() : std::nullopt;
+        const std::optional<double> y = a->size() == 2 ? (*a)[1].value<double>() : std::nullopt;
+        if (!x || !y || (*a)[0].is_boolean() || (*a)[1].is_boolean()) return Expect::InputError;
+        return std::isfinite(std::hypot(*x, *y)) && std::hypot(*x, *y) <= spec.vector_magnitude ? Expect::Any
+                                                                                              : Expect::InputError;
+      }
       const std::optional<double> v = node.value<double>();
       if (!v || node.is_boolean()) return Expect::InputError;
       return spec.interval(doc).contains(*v) ? Expect::Any : Expect::InputError;

@@ -158,6 +158,8 @@ TEST_CASE("soilsph point states the allowed range of each option in plain number
        "<= 1e12 Pa)"},
       {dp + " --test isotropic --ocr 2", "--ocr 2: OCR applies to modified-cam-clay only"},
       {mcc + " --test triaxial-drained --integrator rk4", "--integrator rk4: unknown integrator"},
+      {mcc + " --test triaxial-drained --integrator ''", "--integrator \"\": unknown integrator"},
+      {mcc + " --test triaxial-drained --set material.=1", "--set material.=1: an empty name in the key path"},
   };
   for (const Case& c : cases) {
     INFO(c.args);
