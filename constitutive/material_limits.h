@@ -13,12 +13,16 @@ inline constexpr double kMaxStress = 1e12;
 /// stresses of order p in double precision, so above it the stress state drowns in round-off: with
 /// E = 1e24 the explicit D-P undrained path returned p' = 0 instead of 100 kPa.
 inline constexpr double kMaxYoungModulus = 1e12;
+/// Smallest Young's modulus, Pa: 1 Pa, the smallest initial pressure an input may hold (the weight of
+/// 0.1 mm of soil). Far below it an update's stiffness products reach the subnormal numbers: with
+/// E = 1e-300 an undrained path lost its volume constraint (ε_v = 0.0016) and exited 0.
+inline constexpr double kMinYoungModulus = 1.0;
 
 /// Largest viscoplastic relaxation time, s: far beyond any run (τ → ∞ is elasticity).
 inline constexpr double kMaxRelaxationTime = 1e3;
 
 inline Range relaxation_time_range() { return Range::closed(0.0, kMaxRelaxationTime); }
-inline Range young_modulus_range() { return Range::open_closed(0.0, kMaxYoungModulus); }
+inline Range young_modulus_range() { return Range::closed(kMinYoungModulus, kMaxYoungModulus); }
 inline Range stress_range() { return Range::open_closed(0.0, kMaxStress); }  ///< (0, kMaxStress]
 
 }  // namespace soilsph::limits

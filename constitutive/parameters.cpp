@@ -39,6 +39,7 @@ std::string quoted_list(std::span<const std::string_view> names) {
 
 bool Range::contains(double x) const {
   if (!std::isfinite(x)) return false;
+  if (or_zero && x == 0.0) return true;
   const bool above = lower_open ? x > lower : x >= lower;
   const bool below = upper_open ? x < upper : x <= upper;
   return above && below;
@@ -50,7 +51,7 @@ std::string Range::describe() const {
   text += "value";
   if (std::isfinite(upper)) text += (upper_open ? " < " : " <= ") + format_number(upper);
   if (!std::isfinite(lower) && !std::isfinite(upper)) text = "any finite value";
-  return text;
+  return or_zero ? "value = 0 or " + text : text;
 }
 
 TableReader::TableReader(const toml::table& table, std::string source, std::string table_name)

@@ -32,6 +32,7 @@ struct Range {
   double upper = std::numeric_limits<double>::infinity();
   bool lower_open = true;
   bool upper_open = true;
+  bool or_zero = false;  ///< 0 is allowed too ("off"), below the interval
 
   static Range positive() { return {0.0, kInf, true, true}; }                 ///< (0, ∞)
   static Range non_negative() { return {0.0, kInf, false, true}; }            ///< [0, ∞)
@@ -39,6 +40,8 @@ struct Range {
   static Range closed(double lo, double hi) { return {lo, hi, false, false}; }  ///< [lo, hi]
   static Range closed_open(double lo, double hi) { return {lo, hi, false, true}; }
   static Range open_closed(double lo, double hi) { return {lo, hi, true, false}; }  ///< (lo, hi]
+  /// 0 ("off") or [lo, hi]: a tolerance whose smallest value is where round-off makes it unreachable.
+  static Range zero_or_closed(double lo, double hi) { return {lo, hi, false, false, true}; }
 
   bool contains(double x) const;
   std::string describe() const;  ///< e.g. "0 < value < 90"

@@ -199,7 +199,11 @@ void run(const PointOptions& o, bool legs_given, bool test_options_given) {
     throw ParameterError("--path-tolerance does not apply to --integrator cvode (the reference holds the "
                          "imposed stresses throughout)");
   if (verification::is_programme_file(o.material_path)) return run_programme_file(o, legs_given || test_options_given);
-  if (o.test.empty()) throw ParameterError("--test is required (or give a programme file, see docs/programmes.md)");
+  if (o.test.empty()) {
+    parse_toml_file(o.material_path);  // a programme with a syntax error: its file, line and column
+    throw ParameterError(o.material_path + ": no [[leg]] table, so not a programme file (docs/programmes.md); "
+                         "a material file needs --test");
+  }
   const verification::PointTest test = point_test(o, legs_given);
   const Material material = load_point_material(o);
   if (test.ocr != 1.0 && !has_preconsolidation(material))

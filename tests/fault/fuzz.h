@@ -43,7 +43,7 @@ struct File {
 struct Case {
   std::uint64_t seed = 0;
   std::uint64_t index = 0;
-  std::string kind;                    ///< material, point, strain-path, collapse, cli-point, cli-collapse
+  std::string kind;  ///< material, point, strain-path, programme, collapse, cli-point, cli-collapse
   std::vector<std::string> mutations;  ///< each mutation in words
   std::vector<File> files;             ///< written into the case folder before the run
   std::vector<std::string> args;       ///< the arguments after the executable
@@ -72,6 +72,8 @@ struct Inputs {
   std::string material_dp, material_mcc;  ///< data/materials/{dp,mcc}-table1.toml
   std::string strain_csv;                 ///< data/strain-paths/simple-shear.csv
   std::string scene_dp, scene_mcc;        ///< data/scenes/collapse-{dp,mcc}.toml made small (below)
+  /// data/programmes/*.toml by name, their material paths made absolute (programme_with_absolute_material)
+  std::vector<std::pair<std::string, std::string>> programmes;
   static Inputs load(const std::string& source_dir);
 };
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -169,8 +170,10 @@ enum class Type { Number, Integer, Boolean, String, Names };
 struct Interval {
   double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
   bool lo_open = true, hi_open = true;
+  bool or_zero = false;  ///< 0 ("off") is admissible too
   bool contains(double x) const {
     if (!std::isfinite(x)) return false;
+    if (or_zero && x == 0.0) return true;
     return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
   }
 };
@@ -266,10 +269,10 @@ std::vector<Spec> make_specs() {
                "young_modulus",
                Type::Number,
                true,
-               {"0", "-1.0e6", "1.0", "1e-300", "5e-324", "1e24", "1e25", "1e40"},
+               {"0", "-1.0e6", "1.0", "0.9999999", "1e-300", "5e-324", "1e12", "1e24", "1e25", "1e40"},
                {},
                {},
-               positive});
+               fixed(closed(1.0, 1e12))});
   s.push_back({"material",
                "poisson_ratio",
                Type::Number,
@@ -374,10 +377,10 @@ std::vector<Spec> make_specs() {
                "implicit_tolerance",
                Type::Number,
                false,
-               {"0", "-1e-300", "1e-3", "0.01", "0.0100001"},
+               {"0", "-1e-300", "1e-30", "9.9e-13", "1e-12", "1e-3", "0.01", "0.0100001"},
                {},
                {},
-               fixed(closed(0.0, 1e-2))});
+               fixed(Interval{1e-12, 1e-2, false, false, true})});
   // [scene] (sph/scene.cpp, docs/sph.md)
   s.push_back({"scene",
                "column_width",
@@ -764,7 +767,8 @@ TomlMutation mutate_toml(Rng& rng, Doc& doc, const toml::table& parsed, bool sce
   const std::string original = render(doc);
   if (op < 40 && !keys.empty()) {  // replace a value
     Line& line = doc.lines[keys[rng.below(keys.size())]];
-    const Spec* spec = find_spec(line.table, line.key);
+    // Outside a scene only [material] is the scene's table (a programme's [initial] is its own).
+    const Spec* spec = scene_file || line.table == "material" ? find_spec(line.table, line.key) : nullptr;
     std::string how;
     const std::string old = value_text(line);
     const std::string value = pick_value(rng, spec, old, &how);
@@ -785,6 +789,7 @@ TomlMutation mutate_toml(Rng& rng, Doc& doc, const toml::table& parsed, bool sce
     const std::vector<std::string> tables = tables_of(doc);
     for (const Spec& s : specs()) {
       if (std::find(tables.begin(), tables.end(), s.table) == tables.end()) continue;
+      if (!scene_file && s.table != "material") continue;
       bool present = false;
       for (std::size_t k : keys)
         present = present || (doc.lines[k].table == s.table && doc.lines[k].key == s.key);
@@ -1545,6 +1550,15 @@ std::string small_scene(const std::string& scene_toml) {
   return render(doc);
 }
 
+/// A shipped programme as a fuzz case's file: its `material = "../materials/X.toml"`, relative to the
+/// programme's folder, made absolute (the case runs in a folder of its own).
+std::string programme_with_absolute_material(const std::string& text, const std::string& programmes_dir) {
+  const std::string key = "material = \"";
+  const std::size_t at = text.find(key);
+  if (at == std::string::npos || text.compare(at + key.size(), 1, "/") == 0) return text;
+  return text.substr(0, at + key.size()) + programmes_dir + "/" + text.substr(at + key.size());
+}
+
 Inputs Inputs::load(const std::string& source_dir) {
   Inputs in;
   in.source_dir = source_dir;
@@ -1553,6 +1567,12 @@ Inputs Inputs::load(const std::string& source_dir) {
   in.strain_csv = read_file(source_dir + "/data/strain-paths/simple-shear.csv");
   in.scene_dp = small_scene(read_file(source_dir + "/data/scenes/collapse-dp.toml"));
   in.scene_mcc = small_scene(read_file(source_dir + "/data/scenes/collapse-mcc.toml"));
+  const std::string programmes_dir = source_dir + "/data/programmes";
+  for (const auto& entry : std::filesystem::directory_iterator(programmes_dir))
+    if (entry.path().extension() == ".toml")
+      in.programmes.emplace_back(entry.path().filename().string(),
+                                 programme_with_absolute_material(read_file(entry.path().string()), programmes_dir));
+  std::sort(in.programmes.begin(), in.programmes.end());  // a case is a function of (seed, index) alone
   return in;
 }
 
@@ -1573,14 +1593,14 @@ Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
     c.command = "material";
     c.args = {"material", material_name};
     mutate_toml_file(rng, c, material_text, material_name, false);
-  } else if (kind < 38) {
+  } else if (kind < 32) {
     c.kind = "point";
     c.command = "point";
     c.args = {"point", material_name};
     add_point_options(rng, c, csv_path);
     c.strain_rows = count_strain_rows(in.strain_csv);
     mutate_toml_file(rng, c, material_text, material_name, false);
-  } else if (kind < 56) {
+  } else if (kind < 46) {
     c.kind = "strain-path";
     c.command = "point";
     c.test = "strain-path";
@@ -1607,6 +1627,18 @@ Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
       if (single.line > 0)
         c.names_if_input.push_back({"the file and line", {"strain-path.csv:" + std::to_string(single.line)}});
     }
+  } else if (kind < 58 && !in.programmes.empty()) {
+    // A shipped programme file mutated like the other TOML inputs (docs/programmes.md), run as it is or
+    // with another integrator; its output is checked for shape and finite values only.
+    c.kind = "programme";
+    c.command = "point";
+    const auto& [name, text] = in.programmes[rng.below(in.programmes.size())];
+    c.args = {"point", name};
+    if (rng.chance(0.3)) {
+      c.args.push_back("--integrator");
+      c.args.push_back(rng.pick(kIntegrators));
+    }
+    mutate_toml_file(rng, c, text, name, false);
   } else if (kind < 88) {
     c.kind = "collapse";
     c.command = "collapse";
