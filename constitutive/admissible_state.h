@@ -21,8 +21,8 @@ template <class Model>
 bool admissible_state(const Model& model, const State& s) {
   if constexpr (requires { model.normalized_yield(s.stress, s.pc); }) {
     const double p = mean_pressure(s.stress);
-    const bool isotropic =
-        std::sqrt(second_deviatoric_invariant(s.stress)) <= 64.0 * std::numeric_limits<double>::epsilon() * std::abs(p);
+    const bool isotropic = std::sqrt(second_deviatoric_invariant(s.stress)) <=
+                           64.0 * std::numeric_limits<double>::epsilon() * std::abs(p);
     return model.normalized_yield(isotropic ? Mat3(-p * Mat3::Identity()) : s.stress, s.pc) <= 1e-9;
   } else {
     return true;  // no yield surface (linear elasticity)

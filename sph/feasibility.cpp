@@ -90,9 +90,10 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
     refuse(scene, msg.str());
   }
   if (e.memory_bytes > memory_available) {
-    msg << "the scene needs about " << e.memory_bytes / 1e9 << " GB for " << static_cast<double>(e.soil_particles)
-        << " soil and " << static_cast<double>(e.boundary_particles) << " boundary particles; this machine has "
-        << memory_available / 1e9 << " GB (particles from " << particle_count_keys(g) << ")";
+    msg << "the scene needs about " << e.memory_bytes / 1e9 << " GB for "
+        << static_cast<double>(e.soil_particles) << " soil and " << static_cast<double>(e.boundary_particles)
+        << " boundary particles; this machine has " << memory_available / 1e9 << " GB (particles from "
+        << particle_count_keys(g) << ")";
     refuse(scene, msg.str());
   }
   const double limit = scene.limits.max_run_hours * 3600.0;
@@ -100,10 +101,11 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
     msg << "the run would take about " << human_duration(e.seconds) << " (" << e.steps << " steps of "
         << e.time_step << " s to [scene] end_time = " << g.end_time << " s with "
         << static_cast<double>(e.soil_particles) << " soil and " << static_cast<double>(e.boundary_particles)
-        << " boundary particles from " << particle_count_keys(g) << "; the step is [numerics] cfl = " << scene.numerics.cfl
-        << " times h over the P-wave speed c = "
-        << c << " m/s of " << wave_speed_keys(scene.material) << "), more than [scene] max_run_hours = "
-        << scene.limits.max_run_hours << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
+        << " boundary particles from " << particle_count_keys(g)
+        << "; the step is [numerics] cfl = " << scene.numerics.cfl
+        << " times h over the P-wave speed c = " << c << " m/s of " << wave_speed_keys(scene.material)
+        << "), more than [scene] max_run_hours = " << scene.limits.max_run_hours
+        << " (a shorter end_time, a larger particle_spacing, or raise max_run_hours)";
     refuse(scene, msg.str());
   }
   const double frames = g.end_time / scene.output.frame_interval;

@@ -203,8 +203,8 @@ InitialConditions read_initial(const TableReader& t, const std::vector<Material>
       std::cerr << "note: " << t.source() << ": [initial] lateral_stress_ratio defaults to " << k0[0].bound
                 << ", the smallest the yield surface holds at the column's base (the elastic nu/(1-nu) = "
                 << k0[0].elastic << " lies outside it)\n";
-    c.lateral_stress_ratio = t.number_or("lateral_stress_ratio", k0[0].preferred(),
-                                         lateral_stress_ratio_range(bound));
+    c.lateral_stress_ratio =
+        t.number_or("lateral_stress_ratio", k0[0].preferred(), lateral_stress_ratio_range(bound));
     c.material_lateral_stress_ratio = {c.lateral_stress_ratio};
   } else if (t.has("lateral_stress_ratio")) {  // one K0 for all; without the key each its own (not recorded)
     c.lateral_stress_ratio = t.number("lateral_stress_ratio", lateral_stress_ratio_range(bound));

@@ -117,7 +117,8 @@ void check_integrator(const std::string& name) {
     allowed += std::string(scheme) + ", ";
   }
   if (name == verification::kReferenceIntegrator) return;
-  throw ParameterError("--integrator " + (name.empty() ? std::string("\"\"") : name) + ": unknown integrator (allowed: " + allowed +
+  throw ParameterError("--integrator " + (name.empty() ? std::string("\"\"") : name) +
+                       ": unknown integrator (allowed: " + allowed +
                        std::string(verification::kReferenceIntegrator) + ")");
 }
 
@@ -201,7 +202,8 @@ void run(const PointOptions& o, bool legs_given, bool test_options_given) {
   if (verification::is_programme_file(o.material_path)) return run_programme_file(o, legs_given || test_options_given);
   if (o.test.empty()) {
     parse_toml_file(o.material_path);  // a programme with a syntax error: its file, line and column
-    throw ParameterError(o.material_path + ": no [[leg]] table, so not a programme file (docs/programmes.md); "
+    throw ParameterError(o.material_path +
+                         ": no [[leg]] table, so not a programme file (docs/programmes.md); "
                          "a material file needs --test");
   }
   const verification::PointTest test = point_test(o, legs_given);
@@ -260,9 +262,10 @@ void add_point_command(CLI::App& app) {
                          ->transform(whole_number_in(1, limits::kMaxIncrements));
   std::string integrators;
   for (std::string_view name : kIntegratorNames) integrators += std::string(name) + ", ";
-  auto* integrator = cmd->add_option("--integrator", o->integrator,
-                  "stress integrator: " + integrators +
-                      "or cvode (the reference); replaces the material's (default: the material's integrator key)");
+  auto* integrator = cmd->add_option(
+      "--integrator", o->integrator,
+      "stress integrator: " + integrators +
+          "or cvode (the reference); replaces the material's (default: the material's integrator key)");
   cmd->add_option("--path-tolerance", o->path_tolerance,
                   "driver sub-steps: split each increment with stress-imposed components (drained/undrained "
                   "triaxial, programme legs) until its step-doubling error estimate is <= this, relative "

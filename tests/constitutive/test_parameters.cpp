@@ -55,7 +55,8 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
       {kCamClay + "elasticity = \"constant\"\nyoung_modulus = 0.999\n",
        "[material] young_modulus = 0.999 is out of range (allowed: 1 <= value <= 1e12 Pa)"},
       {kCamClay + "implicit_tolerance = 1e-30\n",
-       "[material] implicit_tolerance = 1e-30 is out of range (allowed: value = 0 or 1e-12 <= value <= 0.01)"},
+       "[material] implicit_tolerance = 1e-30 is out of range (allowed: value = 0 or 1e-12 <= value <= "
+       "0.01)"},
       {replace(kDruckerPrager, "poisson_ratio = 0.3", "poisson_ratio = 0.5"),
        "[material] poisson_ratio = 0.5 is out of range (allowed: -1 < value < 0.5)"},
       {replace(kDruckerPrager, "friction_angle = 35.0", "friction_angle = 90"),
@@ -181,7 +182,8 @@ material = "sand"
   CHECK_THROWS_WITH(apply_override(root, "materials.clay.cohesion.x=1"),
                     Contains("[materials.clay.cohesion] is not a table"));
   CHECK_THROWS_WITH(apply_override(root, "materials..cohesion=1"), Contains("an empty name in the key path"));
-  CHECK_THROWS_WITH(apply_override(root, "material.=1"), Contains("--set material.=1: an empty name in the key path"));
+  CHECK_THROWS_WITH(apply_override(root, "material.=1"),
+                    Contains("--set material.=1: an empty name in the key path"));
 }
 
 TEST_CASE("a bad value given with --set is blamed on the option, not on the file", "[parameters]") {

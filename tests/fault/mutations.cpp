@@ -603,8 +603,8 @@ Expect judge(const Spec& spec, const toml::node& node, const toml::table& doc) {
         const std::optional<double> x = a->size() == 2 ? (*a)[0].value<double>() : std::nullopt;
         const std::optional<double> y = a->size() == 2 ? (*a)[1].value<double>() : std::nullopt;
         if (!x || !y || (*a)[0].is_boolean() || (*a)[1].is_boolean()) return Expect::InputError;
-        return std::isfinite(std::hypot(*x, *y)) && std::hypot(*x, *y) <= spec.vector_magnitude ? Expect::Any
-                                                                                              : Expect::InputError;
+        const double magnitude = std::hypot(*x, *y);
+        return std::isfinite(magnitude) && magnitude <= spec.vector_magnitude ? Expect::Any : Expect::InputError;
       }
       const std::optional<double> v = node.value<double>();
       if (!v || node.is_boolean()) return Expect::InputError;
@@ -1570,8 +1570,9 @@ Inputs Inputs::load(const std::string& source_dir) {
   const std::string programmes_dir = source_dir + "/data/programmes";
   for (const auto& entry : std::filesystem::directory_iterator(programmes_dir))
     if (entry.path().extension() == ".toml")
-      in.programmes.emplace_back(entry.path().filename().string(),
-                                 programme_with_absolute_material(read_file(entry.path().string()), programmes_dir));
+      in.programmes.emplace_back(
+          entry.path().filename().string(),
+          programme_with_absolute_material(read_file(entry.path().string()), programmes_dir));
   std::sort(in.programmes.begin(), in.programmes.end());  // a case is a function of (seed, index) alone
   return in;
 }

@@ -130,7 +130,8 @@ TEST_CASE("soilsph point states the allowed range of each option in plain number
   const fs::path drift = dir.path / "drift.csv";
   std::ofstream(drift) << "d_xx,d_yy,d_zz,d_xy,d_yz,d_xz\n0,0,0,0.6,0,0\n# twice\n0,0,0,0.6,0,0\n";
   const fs::path broken = dir.path / "broken.toml";
-  std::ofstream(broken) << "material = \"" << mcc << "\"\n[initial]\np = 1__0\n[[leg]]\nstrain = { xx = 0.1 }\n";
+  std::ofstream(broken) << "material = \"" << mcc
+                        << "\"\n[initial]\np = 1__0\n[[leg]]\nstrain = { xx = 0.1 }\n";
   struct Case {
     std::string args, message;
   };
@@ -161,7 +162,8 @@ TEST_CASE("soilsph point states the allowed range of each option in plain number
       {dp + " --test isotropic --ocr 2", "--ocr 2: OCR applies to modified-cam-clay only"},
       {mcc + " --test triaxial-drained --integrator rk4", "--integrator rk4: unknown integrator"},
       {mcc + " --test triaxial-drained --integrator ''", "--integrator \"\": unknown integrator"},
-      {mcc + " --test triaxial-drained --set material.=1", "--set material.=1: an empty name in the key path"},
+      {mcc + " --test triaxial-drained --set material.=1",
+       "--set material.=1: an empty name in the key path"},
       // Without --test the file must be a programme: a material file, or a programme with a syntax error,
       // is named (an input-fuzzer finding: the error said only that --test was missing).
       {mcc, "mcc-table1.toml: no [[leg]] table, so not a programme file"},

@@ -246,7 +246,8 @@ TEST_CASE("a cohesionless D-P cone thinner than the stress's round-off: every in
   const double p0 = 1e5, tan_phi = std::tan(params.friction_angle * std::numbers::pi / 180.0);
   const double alpha = tan_phi / std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);  // eq 19
   // Undrained, ψ = 0: no plastic volume change, so p' stays p0; q rests on the cone, 3√3 α p0.
-  const PointCurve undrained = run_point_test(model, make_test(LoadPath::TriaxialUndrained, {0.1}, 20), integrator);
+  const PointCurve undrained =
+      run_point_test(model, make_test(LoadPath::TriaxialUndrained, {0.1}, 20), integrator);
   for (const PointRecord& r : undrained) REQUIRE(std::abs(r.p - p0) <= 1e-9 * p0);
   CHECK(undrained.back().q == Approx(3.0 * std::sqrt(3.0) * alpha * p0).epsilon(1e-4));
   // Oedometer: the deviator stays on the cone (≈ 0) and the volume change is elastic, p = p0 + K ε_a.
