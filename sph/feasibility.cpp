@@ -77,8 +77,10 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
   const Geometry& g = scene.geometry;
   std::ostringstream msg;
   if (!(e.time_step > 0.0) || !std::isfinite(e.time_step)) {
-    msg << "the time step " << e.time_step << " s is not finite and positive (the P-wave speed c = " << e.sound_speed
-        << " m/s of " << wave_speed_keys(scene.material) << ")";
+    msg << "the time step " << e.time_step
+        << " s is not finite and positive ([numerics] cfl = " << scene.numerics.cfl
+        << " times h over the P-wave speed c = " << e.sound_speed << " m/s of "
+        << wave_speed_keys(scene.material) << ")";
     refuse(scene, msg.str());
   }
   const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity_magnitude() * g.column_height);

@@ -77,9 +77,11 @@ void check_on_cell_edge(const std::string& where, std::string_view key, char axi
   if (std::abs(cells - nearest) <= 1e-6) return;
   const double below = origin + (std::floor(cells) + 0.5) * dx, above = below + dx;
   throw ParameterError(where + " " + std::string(key) + " " + axis + " = " + format_number(value) +
-                       " m does not fall on a cell edge of the lattice (" + axis + " = " + format_number(origin) +
-                       " + (i + 1/2) x " + format_number(dx) + " m); the nearest are " + format_number(below) +
-                       " and " + format_number(above) + " m (or move [scene] lattice_origin)");
+                       " m does not fall on a cell edge of the lattice (" + axis + " = " +
+                       format_number(origin) +
+                       " + (i + 1/2) x [scene] particle_spacing = " + format_number(dx) +
+                       " m); the nearest are " + format_number(below) + " and " + format_number(above) +
+                       " m (or move [scene] lattice_origin, or take another particle_spacing)");
 }
 
 /// A `shape = "particles"` entry: its `file` (relative to the scene file's folder; recorded as an

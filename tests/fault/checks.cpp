@@ -372,6 +372,10 @@ std::map<std::string, std::string> flat_json(const std::string& text) {
     }
     std::size_t v = text.find_first_not_of(" \t\r\n", colon + 1);
     if (v == std::string::npos) break;
+    if (text[v] == '{' || text[v] == '[') {  // nested (initial_stress): its members are read as keys
+      at = v + 1;
+      continue;
+    }
     std::size_t end;
     if (text[v] == '"') {
       end = v + 1;

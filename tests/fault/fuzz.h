@@ -72,6 +72,9 @@ struct Inputs {
   std::string material_dp, material_mcc;  ///< data/materials/{dp,mcc}-table1.toml
   std::string strain_csv;                 ///< data/strain-paths/simple-shear.csv
   std::string scene_dp, scene_mcc;        ///< data/scenes/collapse-{dp,mcc}.toml made small (below)
+  /// Other shipped scenes (regions, gates, several materials, Mohr-Coulomb), made small, by their
+  /// case file names scene-NAME.toml
+  std::vector<std::pair<std::string, std::string>> other_scenes;
   /// data/programmes/*.toml by name, their material paths made absolute (programme_with_absolute_material)
   std::vector<std::pair<std::string, std::string>> programmes;
   static Inputs load(const std::string& source_dir);

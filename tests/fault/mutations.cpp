@@ -775,6 +775,11 @@ TomlMutation mutate_toml(Rng& rng, Doc& doc, const toml::table& parsed, bool sce
     set_value(line, value);
     m.words = "[" + line.table + "] " + line.key + " = " + old + " replaced by " + value + " (" + how + ")";
     m.keys = {line.key};
+    // A scene's named materials ([materials.NAME]) have [material]'s keys: a message may name the
+    // keys this one bounds (compression_index bounds swelling_index), though the value is not judged.
+    if (const Spec* named =
+            scene_file && line.table.starts_with("materials.") ? find_spec("material", line.key) : nullptr)
+      for (const std::string& d : named->dependents) m.keys.push_back(d);
     if (spec) {
       for (const std::string& d : spec->dependents) m.keys.push_back(d);
       const std::optional<toml::table> v = try_parse("v = " + value);
@@ -856,7 +861,9 @@ TomlMutation mutate_toml(Rng& rng, Doc& doc, const toml::table& parsed, bool sce
         line.text = key + " = 1.0";
         line.table = table;
         line.key = key;
-        doc.lines.insert(doc.lines.begin() + static_cast<long>(i) + 1 + rng.below(2), line);
+        // Right after the header or one line further, but never past the end (a header on the last line).
+        const std::size_t at = std::min(i + 1 + rng.below(2), doc.lines.size());
+        doc.lines.insert(doc.lines.begin() + static_cast<long>(at), line);
         break;
       }
     }
@@ -1567,6 +1574,12 @@ Inputs Inputs::load(const std::string& source_dir) {
   in.strain_csv = read_file(source_dir + "/data/strain-paths/simple-shear.csv");
   in.scene_dp = small_scene(read_file(source_dir + "/data/scenes/collapse-dp.toml"));
   in.scene_mcc = small_scene(read_file(source_dir + "/data/scenes/collapse-mcc.toml"));
+  // Those that run at the small scene's 4 mm (vertical-cut's 3 cm does not divide by it; the imported
+  // column reads a CSV beside it).
+  for (const char* name :
+       {"collapse-mc", "gate-lift", "slope", "two-material-column", "sphinxsys-column-collapse"})
+    in.other_scenes.emplace_back(std::string("scene-") + name + ".toml",
+                                 small_scene(read_file(source_dir + "/data/scenes/" + name + ".toml")));
   const std::string programmes_dir = source_dir + "/data/programmes";
   for (const auto& entry : std::filesystem::directory_iterator(programmes_dir))
     if (entry.path().extension() == ".toml")
@@ -1575,6 +1588,13 @@ Inputs Inputs::load(const std::string& source_dir) {
           programme_with_absolute_material(read_file(entry.path().string()), programmes_dir));
   std::sort(in.programmes.begin(), in.programmes.end());  // a case is a function of (seed, index) alone
   return in;
+}
+
+/// The scene of a collapse case: the D-P or MCC column, or (30 %) another shipped scene.
+std::pair<std::string, std::string> collapse_scene(Rng& rng, const Inputs& in, bool dp) {
+  if (!in.other_scenes.empty() && rng.chance(0.3)) return in.other_scenes[rng.below(in.other_scenes.size())];
+  return dp ? std::pair<std::string, std::string>{"scene-dp.toml", in.scene_dp}
+            : std::pair<std::string, std::string>{"scene-mcc.toml", in.scene_mcc};
 }
 
 Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
@@ -1643,10 +1663,10 @@ Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
   } else if (kind < 88) {
     c.kind = "collapse";
     c.command = "collapse";
-    const std::string scene_name = dp ? "scene-dp.toml" : "scene-mcc.toml";
+    const auto [scene_name, scene_text] = collapse_scene(rng, in, dp);
     c.args = {"collapse", scene_name, "--out", "out", "--threads", "1"};
     c.out_dir = "out";
-    mutate_toml_file(rng, c, dp ? in.scene_dp : in.scene_mcc, scene_name, true);
+    mutate_toml_file(rng, c, scene_text, scene_name, true);
   } else if (kind < 95) {
     c.kind = "cli-point";
     c.command = "point";
@@ -1658,8 +1678,7 @@ Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
   } else {
     c.kind = "cli-collapse";
     c.command = "collapse";
-    const std::string scene_name = dp ? "scene-dp.toml" : "scene-mcc.toml";
-    const std::string scene_text = dp ? in.scene_dp : in.scene_mcc;
+    const auto [scene_name, scene_text] = collapse_scene(rng, in, dp);
     c.files.push_back({scene_name, scene_text});
     c.toml_path = scene_name;
     c.args = {"collapse", scene_name, "--out", "out", "--threads", "1"};
@@ -1717,6 +1736,17 @@ std::vector<Case> base_cases(const Inputs& in) {
     s.mutations = {"none"};
     const std::string scene = dp ? "scene-dp.toml" : "scene-mcc.toml";
     s.files = {{scene, dp ? in.scene_dp : in.scene_mcc}};
+    s.toml_path = scene;
+    s.args = {"collapse", scene, "--out", "out", "--threads", "1"};
+    s.out_dir = "out";
+    cases.push_back(s);
+  }
+  for (const auto& [scene, text] : in.other_scenes) {
+    Case s;
+    s.kind = "collapse";
+    s.command = "collapse";
+    s.mutations = {"none"};
+    s.files = {{scene, text}};
     s.toml_path = scene;
     s.args = {"collapse", scene, "--out", "out", "--threads", "1"};
     s.out_dir = "out";

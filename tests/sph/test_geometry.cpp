@@ -136,7 +136,8 @@ TEST_CASE("geometry keys are validated with the file, the table and the key name
   };
   CHECK_THROWS_WITH(with("max = [0.041, 0.061]", "max = [0.0415, 0.061]"),
                     Contains("[regions #1] max x = 0.0415 m does not fall on a cell edge") &&
-                        Contains("the nearest are 0.041 and 0.043"));
+                        Contains("the nearest are 0.041 and 0.043") &&
+                        Contains("[scene] particle_spacing = 0.002"));
   CHECK_THROWS_WITH(with("shape = \"box\"\nmin = [-0.001, -0.001]\nmax = [0.041, 0.061]",
                          "shape = \"polygon\"\npoints = [[0, 0], [0.04, 0.06], [0.04, 0], [0, 0.06]]"),
                     Contains("[regions #1] points: the polygon is not simple"));
