@@ -491,8 +491,10 @@ std::vector<Finding> check(const Case& c, const Outcome& o, const fs::path& dir)
     // key, e.g. gravity = 1e308, is blamed on K0, that is message-missing-name, not this.)
     bool blamed_elsewhere = false;
     for (const Finding& g : f) blamed_elsewhere = blamed_elsewhere || g.category == "message-missing-name";
-    // Only the error line: a `note:` may rightly say which K0 the default became.
-    if (o.code == 2 && !blamed_elsewhere && last_line(o.err).find("lateral_stress_ratio") != std::string::npos) {
+    // Only the error line: a `note:` may rightly say which K0 the default became. And only [initial]'s
+    // key: with the [initial] header deleted, "[scene] lateral_stress_ratio: is not a known key" is right.
+    if (o.code == 2 && !blamed_elsewhere &&
+        last_line(o.err).find("[initial] lateral_stress_ratio") != std::string::npos) {
       const std::optional<toml::table> doc = effective_toml(c, dir);
       if (doc && !(*doc)["initial"]["lateral_stress_ratio"].node())
         f.push_back({"default-k0-rejected", "the default K0 (no lateral_stress_ratio given) is refused: \"" +
