@@ -66,10 +66,11 @@ ModifiedCamClay::ModifiedCamClay(const Params& params)
     require_constant_moduli(kName, params.young_modulus, elasticity_);
     return;
   }
-  // The smallest pressure-dependent moduli, at the floor: K = p_floor (1+e0)/κ.
+  // The smallest pressure-dependent moduli, at the floor: K = p_floor (1+e0)/κ. With p_floor ≤ 1e12 Pa
+  // and a finite θ (above), an infinite K comes from a κ that is (nearly) subnormal: it is blamed.
   const Moduli D = elasticity_.at(0.0);
-  require_derived(kName, "elastic_pressure_floor", params.elastic_pressure_floor, "K = p_floor (1+e0)/kappa", D.K,
-                  "Pa");
+  require_derived(kName, "swelling_index", params.swelling_index,
+                  "K = p_floor (1+e0)/kappa at the elastic_pressure_floor", D.K, "Pa");
   require_derived(kName, "elastic_pressure_floor", params.elastic_pressure_floor, "G = 3K(1-2 nu)/(2(1+nu))", D.G,
                   "Pa");
 }

@@ -30,6 +30,7 @@ std::vector<std::string_view> fields_of(std::string_view line) {
 }  // namespace
 
 std::vector<Region> read_particle_file(const std::string& path, const std::string& region_name, double dx,
+                                       const std::string& spacing_key,
                                        const std::vector<std::string>& materials) {
   std::ifstream in(path);
   if (!in) throw ParameterError(path + ": cannot read the particle file (" + region_name + " file)");
@@ -78,7 +79,7 @@ std::vector<Region> read_particle_file(const std::string& path, const std::strin
           if (norm(p - q) < 0.5 * dx)
             fail(line, "the particle at (" + format_number(p.x) + ", " + format_number(p.y) + ") m lies " +
                            format_number(norm(p - q)) + " m from that of line " + std::to_string(other) +
-                           ", closer than half the particle_spacing (" + format_number(0.5 * dx) + " m)");
+                           ", closer than half the " + spacing_key + " (" + format_number(dx) + " m)");
       }
     cells[{ci, cj}].push_back({p, line});
     auto region = std::find_if(regions.begin(), regions.end(), [&](const Region& r) { return r.material == material; });

@@ -132,7 +132,8 @@ TEST_CASE("derived constants that are not finite and positive are rejected, nami
        "[material] friction_angle = 0.999 is out of range"},
       // κ/(1+e0) = 1e-310/1.68 is subnormal, so K at the 1 kPa floor is 1e3/6e-311 = inf.
       {replace(kCamClay, "swelling_index = 0.019", "swelling_index = 1e-310"),
-       "[material] elastic_pressure_floor = 1000 gives K = p_floor (1+e0)/kappa = inf Pa"},
+       "[material] swelling_index = 1e-310 gives K = p_floor (1+e0)/kappa at the elastic_pressure_floor = "
+       "inf Pa"},
   };
   for (const Case& c : cases) {
     INFO(c.text);

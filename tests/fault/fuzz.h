@@ -67,22 +67,28 @@ struct Case {
 };
 
 /// The shipped inputs the mutants start from, read once.
+/// A collapse scene of the fuzzer: its case file name, its text, and files it reads beside it.
+struct SceneInput {
+  std::string name, text;
+  std::vector<File> files;  ///< e.g. the particle CSV of a `shape = "particles"` region
+};
+
 struct Inputs {
   std::string source_dir;  ///< the project's source tree (for the unmutated files' absolute paths)
   std::string material_dp, material_mcc;  ///< data/materials/{dp,mcc}-table1.toml
   std::string strain_csv;                 ///< data/strain-paths/simple-shear.csv
   std::string scene_dp, scene_mcc;        ///< data/scenes/collapse-{dp,mcc}.toml made small (below)
-  /// Other shipped scenes (regions, gates, several materials, Mohr-Coulomb), made small, by their
-  /// case file names scene-NAME.toml
-  std::vector<std::pair<std::string, std::string>> other_scenes;
+  /// Other shipped scenes (regions, gates, several materials, Mohr-Coulomb, imported particles), made
+  /// small, by their case file names scene-NAME.toml
+  std::vector<SceneInput> other_scenes;
   /// data/programmes/*.toml by name, their material paths made absolute (programme_with_absolute_material)
   std::vector<std::pair<std::string, std::string>> programmes;
   static Inputs load(const std::string& source_dir);
 };
 
-/// A shipped collapse scene made small: particle_spacing 0.004, end_time 0.02, frame_interval 0.01,
-/// and a run-time budget max_run_hours = 0.002 (7 s).
-std::string small_scene(const std::string& scene_toml);
+/// A shipped collapse scene made small: particle_spacing 0.004 (or `spacing`, for a geometry it
+/// does not divide), end_time 0.02, frame_interval 0.01, and a run-time budget max_run_hours = 0.002 (7 s).
+std::string small_scene(const std::string& scene_toml, const std::string& spacing = "0.004");
 
 /// The case of `index` under `seed`: the same pair always gives the same case.
 Case make_case(const Inputs& inputs, std::uint64_t seed, std::uint64_t index);

@@ -1538,11 +1538,11 @@ void mutate_collapse_cli(Rng& rng, Case& c, const toml::table& scene) {
 
 }  // namespace
 
-std::string small_scene(const std::string& scene_toml) {
+std::string small_scene(const std::string& scene_toml, const std::string& spacing) {
   Doc doc = parse_doc(scene_toml);
   for (std::size_t i = 0; i < doc.lines.size(); ++i) {
     Line& line = doc.lines[i];
-    if (line.table == "scene" && line.key == "particle_spacing") set_value(line, "0.004");
+    if (line.table == "scene" && line.key == "particle_spacing") set_value(line, spacing);
     if (line.table == "output" && line.key == "frame_interval") set_value(line, "0.01");
     if (line.table == "scene" && line.key == "end_time") {
       set_value(line, "0.02");
@@ -1574,12 +1574,19 @@ Inputs Inputs::load(const std::string& source_dir) {
   in.strain_csv = read_file(source_dir + "/data/strain-paths/simple-shear.csv");
   in.scene_dp = small_scene(read_file(source_dir + "/data/scenes/collapse-dp.toml"));
   in.scene_mcc = small_scene(read_file(source_dir + "/data/scenes/collapse-mcc.toml"));
-  // Those that run at the small scene's 4 mm (vertical-cut's 3 cm does not divide by it; the imported
-  // column reads a CSV beside it).
+  const auto scene = [&](const std::string& name, const std::string& spacing) {
+    return SceneInput{"scene-" + name + ".toml",
+                      small_scene(read_file(source_dir + "/data/scenes/" + name + ".toml"), spacing),
+                      {}};
+  };
   for (const char* name :
        {"collapse-mc", "gate-lift", "slope", "two-material-column", "sphinxsys-column-collapse"})
-    in.other_scenes.emplace_back(std::string("scene-") + name + ".toml",
-                                 small_scene(read_file(source_dir + "/data/scenes/" + name + ".toml")));
+    in.other_scenes.push_back(scene(name, "0.004"));
+  in.other_scenes.push_back(scene("vertical-cut", "0.005"));  // its 3 cm cut does not divide by 4 mm
+  // The imported column samples its CSV at 4 mm, which the scene's spacing must keep.
+  in.other_scenes.push_back(scene("imported-column", "0.004"));
+  in.other_scenes.back().files = {
+      {"imported-column.csv", read_file(source_dir + "/data/scenes/imported-column.csv")}};
   const std::string programmes_dir = source_dir + "/data/programmes";
   for (const auto& entry : std::filesystem::directory_iterator(programmes_dir))
     if (entry.path().extension() == ".toml")
@@ -1591,10 +1598,9 @@ Inputs Inputs::load(const std::string& source_dir) {
 }
 
 /// The scene of a collapse case: the D-P or MCC column, or (30 %) another shipped scene.
-std::pair<std::string, std::string> collapse_scene(Rng& rng, const Inputs& in, bool dp) {
+SceneInput collapse_scene(Rng& rng, const Inputs& in, bool dp) {
   if (!in.other_scenes.empty() && rng.chance(0.3)) return in.other_scenes[rng.below(in.other_scenes.size())];
-  return dp ? std::pair<std::string, std::string>{"scene-dp.toml", in.scene_dp}
-            : std::pair<std::string, std::string>{"scene-mcc.toml", in.scene_mcc};
+  return dp ? SceneInput{"scene-dp.toml", in.scene_dp, {}} : SceneInput{"scene-mcc.toml", in.scene_mcc, {}};
 }
 
 Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
@@ -1663,10 +1669,22 @@ Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
   } else if (kind < 88) {
     c.kind = "collapse";
     c.command = "collapse";
-    const auto [scene_name, scene_text] = collapse_scene(rng, in, dp);
-    c.args = {"collapse", scene_name, "--out", "out", "--threads", "1"};
+    const SceneInput scene = collapse_scene(rng, in, dp);
+    c.args = {"collapse", scene.name, "--out", "out", "--threads", "1"};
     c.out_dir = "out";
-    mutate_toml_file(rng, c, scene_text, scene_name, true);
+    if (!scene.files.empty() && rng.chance(0.5)) {
+      // The file the scene reads (the imported particles), mutated like the strain-path CSV; what it
+      // may rightly hold differs (x, y, a region name), so only the contract is judged: a refusal
+      // names the file.
+      File data = scene.files.front();
+      c.mutations.push_back(mutate_csv(rng, data.content).words);
+      c.files = {data, {scene.name, scene.text}};
+      c.toml_path = scene.name;
+      c.names_if_input = {{"the file", {data.name}}};
+    } else {
+      c.files = scene.files;
+      mutate_toml_file(rng, c, scene.text, scene.name, true);
+    }
   } else if (kind < 95) {
     c.kind = "cli-point";
     c.command = "point";
@@ -1678,12 +1696,13 @@ Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
   } else {
     c.kind = "cli-collapse";
     c.command = "collapse";
-    const auto [scene_name, scene_text] = collapse_scene(rng, in, dp);
-    c.files.push_back({scene_name, scene_text});
-    c.toml_path = scene_name;
-    c.args = {"collapse", scene_name, "--out", "out", "--threads", "1"};
+    const SceneInput scene = collapse_scene(rng, in, dp);
+    c.files = scene.files;
+    c.files.push_back({scene.name, scene.text});
+    c.toml_path = scene.name;
+    c.args = {"collapse", scene.name, "--out", "out", "--threads", "1"};
     c.out_dir = "out";
-    mutate_collapse_cli(rng, c, toml::parse(scene_text));
+    mutate_collapse_cli(rng, c, toml::parse(scene.text));
   }
   return c;
 }
@@ -1741,14 +1760,15 @@ std::vector<Case> base_cases(const Inputs& in) {
     s.out_dir = "out";
     cases.push_back(s);
   }
-  for (const auto& [scene, text] : in.other_scenes) {
+  for (const SceneInput& scene : in.other_scenes) {
     Case s;
     s.kind = "collapse";
     s.command = "collapse";
     s.mutations = {"none"};
-    s.files = {{scene, text}};
-    s.toml_path = scene;
-    s.args = {"collapse", scene, "--out", "out", "--threads", "1"};
+    s.files = scene.files;
+    s.files.push_back({scene.name, scene.text});
+    s.toml_path = scene.name;
+    s.args = {"collapse", scene.name, "--out", "out", "--threads", "1"};
     s.out_dir = "out";
     cases.push_back(s);
   }
