@@ -15,11 +15,12 @@ namespace soilsph::sph {
 
 namespace {
 /// The material keys that set the P-wave speed, for a refusal caused by a tiny time step.
-std::string wave_speed_keys(const Material& material) {
+std::string wave_speed_keys(const Material& material, const std::string& table = "[material]") {
   const Elasticity::Kind kind = std::visit([](const auto& m) { return m.elasticity().kind(); }, material);
-  return kind == Elasticity::Kind::Constant
-             ? "[material] young_modulus, poisson_ratio and density"
-             : "[material] swelling_index, initial_void_ratio, poisson_ratio and density at the base pressure";
+  return table +
+         (kind == Elasticity::Kind::Constant
+              ? " young_modulus, poisson_ratio and density"
+              : " swelling_index, initial_void_ratio, poisson_ratio and density at the base pressure");
 }
 
 /// The keys that set the particle counts: the spacing and the geometry's size.
@@ -83,11 +84,21 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
         << wave_speed_keys(scene.material) << ")";
     refuse(scene, msg.str());
   }
+  // Each material must carry its weight (|v| << c in every one of them), not only the stiffest,
+  // whose c sets the step: a clay of density 2e303 beside a sand was otherwise refused later, by
+  // its overflowing geostatic stress, without naming its density.
   const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity_magnitude() * g.column_height);
-  if (c <= free_fall) {
-    msg << "the soil is too soft to carry its own weight: its P-wave speed c = " << c
+  const double p0 = largest_initial_pressure(scene);
+  for (std::size_t k = 0; k < scene.materials.size(); ++k) {
+    const Material& material = scene.materials[k];
+    const Elasticity elasticity = std::visit([](const auto& m) { return m.elasticity(); }, material);
+    const double ck = p_wave_speed(elasticity.at(p0), density(material));
+    if (ck > free_fall) continue;
+    const std::string& name = scene.material_names[k];
+    msg << "the soil is too soft to carry its own weight: its P-wave speed c = " << ck
         << " m/s is below the free-fall speed sqrt(2 g H) = " << free_fall
-        << " m/s, where the weakly compressible scheme needs |v| << c (c from " << wave_speed_keys(scene.material)
+        << " m/s, where the weakly compressible scheme needs |v| << c (c from "
+        << wave_speed_keys(material, name.empty() ? "[material]" : "[materials." + name + "]")
         << "; a stiffer or lighter soil, or a lower [scene] gravity or column_height)";
     refuse(scene, msg.str());
   }

@@ -179,7 +179,10 @@ void run_collapse(const CollapseOptions& o) {
   const RunEstimate estimate = estimate_run(scene);
   check_feasible(scene, estimate, 0.8 * physical_memory());
 
-  Collapse collapse = resumed ? Collapse(scene, std::move(resumed->particles)) : Collapse(scene);
+  // Building the particles refuses a lattice or geostatic state that --set made impossible: say so.
+  Collapse collapse = blaming_overrides(scene.overrides, [&] {
+    return resumed ? Collapse(scene, std::move(resumed->particles)) : Collapse(scene);
+  });
   if (const auto& relaxed = collapse.gravity_loading())
     std::cout << "gravity loading: settled after " << relaxed->steps << " steps (" << relaxed->time
               << " s of relaxation): kinetic energy / (M g H) = " << relaxed->kinetic_energy << " < "
