@@ -99,8 +99,7 @@ std::vector<Region> read_particles_region(const TableReader& t, const toml::tabl
   file = std::filesystem::absolute(file).lexically_normal();
   resolved.insert("file", file.string());
   t.reject_unknown_keys();
-  return read_particle_file(file.string(), "[" + label + "]", dx, "[scene] particle_spacing of " + source,
-                            materials);
+  return read_particle_file(file.string(), "[" + label + "]", dx, source, materials);
 }
 
 std::vector<Region> read_region(const toml::table& table, const std::string& label, const std::string& source, double dx,

@@ -30,7 +30,7 @@ std::vector<std::string_view> fields_of(std::string_view line) {
 }  // namespace
 
 std::vector<Region> read_particle_file(const std::string& path, const std::string& region_name, double dx,
-                                       const std::string& spacing_key,
+                                       const std::string& scene_source,
                                        const std::vector<std::string>& materials) {
   std::ifstream in(path);
   if (!in) throw ParameterError(path + ": cannot read the particle file (" + region_name + " file)");
@@ -67,7 +67,7 @@ std::vector<Region> read_particle_file(const std::string& path, const std::strin
     std::string material(f[2]);
     if (material.empty() && materials.size() == 1) material = materials.front();
     if (std::find(materials.begin(), materials.end(), material) == materials.end())
-      fail(line, "region = \"" + material + "\" names no [materials.NAME] table" +
+      fail(line, "region = \"" + material + "\" names no [materials.NAME] table of " + scene_source +
                      (materials.size() == 1 ? " (leave it empty for the one material)" : ""));
     const Vec2 p{xy[0], xy[1]};
     const long long ci = std::llround(std::floor(p.x / dx)), cj = std::llround(std::floor(p.y / dx));
@@ -79,7 +79,8 @@ std::vector<Region> read_particle_file(const std::string& path, const std::strin
           if (norm(p - q) < 0.5 * dx)
             fail(line, "the particle at (" + format_number(p.x) + ", " + format_number(p.y) + ") m lies " +
                            format_number(norm(p - q)) + " m from that of line " + std::to_string(other) +
-                           ", closer than half the " + spacing_key + " (" + format_number(dx) + " m)");
+                           ", closer than half the [scene] particle_spacing of " + scene_source + " (" +
+                           format_number(dx) + " m)");
       }
     cells[{ci, cj}].push_back({p, line});
     auto region = std::find_if(regions.begin(), regions.end(), [&](const Region& r) { return r.material == material; });

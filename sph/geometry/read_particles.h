@@ -14,10 +14,11 @@ namespace soilsph::sph {
 /// material named, in the order of first appearance, each with the box of its particles' cells as
 /// outline. Throws ParameterError naming the file and line: a missing or unreadable file, a wrong
 /// header, a row without three fields or with a number that does not parse or is not finite or
-/// beyond 10⁴ m, an unknown material, two particles closer than Δp/2 (named as `spacing_key`, e.g.
-/// "[scene] particle_spacing of FILE"), or no particle at all.
+/// beyond 10⁴ m, an unknown material, two particles closer than Δp/2, or no particle at all. The
+/// messages of the two that depend on the scene (its materials, its particle_spacing) name
+/// `scene_source`, the scene file that reads the particles.
 std::vector<Region> read_particle_file(const std::string& path, const std::string& region_name,
-                                       double spacing, const std::string& spacing_key,
+                                       double spacing, const std::string& scene_source,
                                        const std::vector<std::string>& materials);
 
 }  // namespace soilsph::sph

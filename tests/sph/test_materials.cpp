@@ -222,9 +222,12 @@ TEST_CASE("a particle file is validated with the file and line named", "[sph][im
   CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0,sand\n0.004,zero,sand\n"),
                     Contains("p.csv:3: y = \"zero\" is not a number"));
   CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0\n"), Contains("p.csv:2: expected 3 fields"));
-  CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0,clay\n"), Contains("p.csv:2: region = \"clay\" names no"));
+  CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0,clay\n"),
+                    Contains("p.csv:2: region = \"clay\" names no [materials.NAME] table of "));
   CHECK_THROWS_WITH(scene_with("x,y,region\n0.0,0.0,sand\n0.004,0.0,sand\n0.0041,0.001,sand\n"),
-                    Contains("p.csv:4: the particle at (0.0041, 0.001) m lies") && Contains("from that of line 3"));
+                    Contains("p.csv:4: the particle at (0.0041, 0.001) m lies") &&
+                        Contains("from that of line 3") &&
+                        Contains("closer than half the [scene] particle_spacing of "));
   CHECK_THROWS_WITH(scene_with("x,y,region\n1e5,0.0,sand\n"), Contains("p.csv:2: x = 1e5 m lies outside the domain"));
   CHECK_THROWS_WITH(scene_with("x,y,region\n"), Contains("p.csv:1: no particle"));
   std::filesystem::remove_all(dir);
