@@ -90,15 +90,12 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
   const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity_magnitude() * g.column_height);
   const double p0 = largest_initial_pressure(scene);
   for (std::size_t k = 0; k < scene.materials.size(); ++k) {
-    const Material& material = scene.materials[k];
-    const Elasticity elasticity = std::visit([](const auto& m) { return m.elasticity(); }, material);
-    const double ck = p_wave_speed(elasticity.at(p0), density(material));
+    const double ck = p_wave_speed(scene.materials[k], p0);
     if (ck > free_fall) continue;
-    const std::string& name = scene.material_names[k];
     msg << "the soil is too soft to carry its own weight: its P-wave speed c = " << ck
         << " m/s is below the free-fall speed sqrt(2 g H) = " << free_fall
         << " m/s, where the weakly compressible scheme needs |v| << c (c from "
-        << wave_speed_keys(material, name.empty() ? "[material]" : "[materials." + name + "]")
+        << wave_speed_keys(scene.materials[k], scene.material_table(k))
         << "; a stiffer or lighter soil, or a lower [scene] gravity or column_height)";
     refuse(scene, msg.str());
   }

@@ -174,9 +174,8 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
             if (!admissible_state(model, s)) {
               std::ostringstream msg;
               msg << scene.source << ": the geostatic stress at (" << p.x[i] << ", " << p.y[i] << ") m"
-                  << " lies outside the yield surface of "
-                  << (scene.material_names[k].empty() ? "[material]" : "[materials." + scene.material_names[k] + "]")
-                  << "; K0 = " << k0 << " ([initial] lateral_stress_ratio) is not admissible for it";
+                  << " lies outside the yield surface of " << scene.material_table(k) << "; K0 = " << k0
+                  << " ([initial] lateral_stress_ratio) is not admissible for it";
               throw ParameterError(msg.str());
             }
             p.sxx[i] = s.stress(0, 0), p.syy[i] = s.stress(1, 1), p.sxy[i] = s.stress(0, 1);

@@ -123,6 +123,10 @@ struct Scene {
   /// the soil particles of each are contiguous, in this order (initial_state.h).
   std::vector<Material> materials;
   std::vector<std::string> material_names;  ///< their [materials.NAME] names ("" for [material])
+  /// The table of material k, for messages: "[material]" or "[materials.NAME]".
+  std::string material_table(std::size_t k) const {
+    return material_names[k].empty() ? "[material]" : "[materials." + material_names[k] + "]";
+  }
   std::vector<int> region_material;         ///< each layout region's index into `materials`
   DepositFrame deposit;       ///< [deposit]: where the deposit measures are taken from
   std::vector<Gauge> gauges;  ///< [[gauges]]

@@ -76,10 +76,10 @@ SolverSetup make_solver_setup(const Scene& scene) {
   double c = 0.0, constant_c = 0.0;
   bool pressure_dependent = false;
   for (const Material& material : scene.materials) {
-    const Elasticity elasticity = std::visit([](const auto& m) { return m.elasticity(); }, material);
-    const double ck = p_wave_speed(elasticity.at(p0), density(material));
+    const double ck = p_wave_speed(material, p0);
     c = std::max(c, ck);
-    if (elasticity.kind() == Elasticity::Kind::PressureDependent)
+    if (std::visit([](const auto& m) { return m.elasticity().kind(); }, material) ==
+        Elasticity::Kind::PressureDependent)
       pressure_dependent = true;
     else
       constant_c = std::max(constant_c, ck);

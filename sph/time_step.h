@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "constitutive/elasticity.h"
+#include "constitutive/material.h"
 #include "constitutive/state.h"
 #include "sph/particles.h"
 
@@ -21,6 +22,12 @@ namespace soilsph::sph {
 /// Elastic P-wave speed (m/s) for the moduli D and density ρ.
 inline double p_wave_speed(const Moduli& D, double density) {
   return std::sqrt((D.K + 4.0 / 3.0 * D.G) / density);
+}
+
+/// The P-wave speed (m/s) of a material at mean pressure p, with its own density.
+inline double p_wave_speed(const Material& material, double p) {
+  const Elasticity elasticity = std::visit([](const auto& m) { return m.elasticity(); }, material);
+  return p_wave_speed(elasticity.at(p), density(material));
 }
 
 /// Δt = C_cfl h / (c + v_max) (s).
