@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "constitutive/integrators/drift_correction.h"
 #include "constitutive/integrators/integrator.h"
 
 namespace soilsph {
@@ -592,6 +593,23 @@ double relative_difference(const State& a, const State& b, const State& start) {
       std::max({std::sqrt(ddot(a.stress, a.stress)), std::sqrt(ddot(start.stress, start.stress)), 1.0});
   return std::max(std::sqrt(ddot(d, d)) / scale, std::abs(a.pc - b.pc) / a.pc);
 }
+
+/// Local extrapolation of an accepted doubling that ends on the surface: the midpoint's local error
+/// C h³ + O(h⁴) gives X(halves) − X(h) = −¾ C h³, so X(halves) + (X(halves) − X(h))/3 cancels the
+/// h³ term (Richardson), leaving O(h⁴) for (σ, p_c). The extrapolated stress is off the surface by
+/// O(h⁴); the drift correction (drift_correction.h, as after every `substep` substep) puts it back,
+/// adding its own multiplier and plastic strain to the halves' accumulated measures. A result the
+/// extrapolation would make inadmissible (p_c ≤ 0) keeps the halves.
+State extrapolated(const ModifiedCamClay& model, const State& halves, const State& whole) {
+  State x = halves;
+  x.stress += (halves.stress - whole.stress) / 3.0;
+  x.pc += (halves.pc - whole.pc) / 3.0;
+  if (!(x.pc > 0.0) || !x.stress.allFinite()) return halves;
+  Mat3 drift = Mat3::Zero();
+  x.plastic_multiplier += correct_drift(model, x.stress, x.pc, drift);
+  accumulate_plastic_strain(x, drift);
+  return x;
+}
 }  // namespace
 
 State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
@@ -608,8 +626,11 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
   //  2. when R > tol, step doubling: the same sub-increment as two half returns. With the midpoint's
   //     local error e(h) ≈ C h³, X(h) − X(two halves) = e(h) − 2e(h/2) = ¾ C h³ and the two halves
   //     err by 2 C (h/2)³ = ¼ C h³, so E = ‖X(h) − X(halves)‖ / 3 estimates the error of the halves
-  //     (X = σ relative to the stress, and p_c relative), which are accepted when E ≤ tol. (Local
-  //     extrapolation, X(halves) + (X(halves) − X(h))/3, would leave the yield surface; not used.)
+  //     (X = σ relative to the stress, and p_c relative), which are accepted when E ≤ tol. What is
+  //     kept is their local extrapolation (`extrapolated`: O(h⁴), back on the surface by the drift
+  //     correction) when both the whole and the second half end plastic, as `substep` keeps its
+  //     modified-Euler result while its estimate is Euler's: the error per tolerance fell 10–30× on
+  //     the stiff clay's undrained paths, and the cost at equal error by 1.5–2× (docs/integrators.md).
   // The whole rest of the increment is tried first. A rejected sub-increment shrinks by the factor
   // that would meet tol, 0.9 (tol/E)^⅓ (0.9 √(tol/R) on the Euler branch, R ∝ h²), in [0.1, 0.9];
   // an accepted one lets the next grow by the same rule, at most 2×. Sub-increments ≥ kMinFraction
@@ -632,10 +653,12 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
     if (!accept) {
       const State half = implicit_return(model, state, 0.5 * sub);
       next = implicit_return(model, half, 0.5 * sub);
+      const bool ends_plastic = next.plastic_multiplier > 0.0 && whole.plastic_multiplier > 0.0;
       next.plastic_multiplier += half.plastic_multiplier;
       const double estimate = relative_difference(next, whole, state) / 3.0;
       factor = estimate > 0.0 ? 0.9 * std::cbrt(tolerance / estimate) : 2.0;
       accept = estimate <= tolerance;
+      if (accept && ends_plastic) next = extrapolated(model, next, whole);
     }
     if (accept) {
       state = next;

@@ -17,7 +17,7 @@
 ///  4. Drift correction after each accepted substep (Sloan's consistent correction
 ///     σ ← σ − δλ D:n_g, p_c ← p_c(δλ n_g), δλ = f/(n_f:D:n_g + H); the normal correction
 ///     σ ← σ − f n_f/(n_f:n_f) if that does not reduce |f|; the model's own geometric correction as a
-///     last resort), so every substep ends on the surface within FTOL.
+///     last resort; drift_correction.h), so every substep ends on the surface within FTOL.
 /// Too many substeps, or a step below the minimum size with the error still above STOL, hands the rest
 /// of the increment to the model's closest-point projection (`implicit_update`; D-P and MCC have one:
 /// needed at the D-P apex, where the error does not fall with the step); a model without one throws
@@ -29,6 +29,7 @@
 #include <limits>
 #include <string>
 
+#include "constitutive/integrators/drift_correction.h"
 #include "constitutive/integrators/integrator.h"
 #include "constitutive/state.h"
 
@@ -36,7 +37,7 @@ namespace soilsph {
 
 namespace substep_detail {
 /// |normalized f| accepted as "on the surface" (Sloan's FTOL).
-inline constexpr double kYieldTolerance = 1e-9;
+inline constexpr double kYieldTolerance = kSurfaceTolerance;
 /// Loading test tolerance on the cosine between n_f and the elastic stress increment (Sloan's LTOL).
 inline constexpr double kLoadingTolerance = 1e-6;
 inline constexpr double kMinStepFraction = 1e-9;  ///< smallest pseudo-time substep ΔT
@@ -50,7 +51,6 @@ inline double max_substeps(double tolerance) {
 inline constexpr int kMaxPegasusIterations = 100;
 inline constexpr int kUnloadingScan =
     16;  ///< subdivisions searched for the elastic part of an unloading step
-inline constexpr int kMaxDriftIterations = 5;
 /// Stresses below this norm (Pa) are compared absolutely in the error estimate (a stress-free state).
 inline constexpr double kStressFloor = 1.0;
 
@@ -97,46 +97,6 @@ double pegasus(const G& g, double a, double b, double ga, double gb) {
     gb = gc;
   }
   throw IntegrationError("substep: the yield-surface intersection (Pegasus) did not converge");
-}
-
-/// Brings (σ, p_c) back to f = 0 after a substep; returns the multiplier of the correction.
-template <class Model>
-double correct_drift(const Model& model, Mat3& sigma, double& pc, Mat3& plastic_strain) {
-  double total = 0.0;
-  for (int it = 0; it < kMaxDriftIterations; ++it) {
-    const double f = model.normalized_yield(sigma, pc);
-    if (std::abs(f) <= kYieldTolerance) return total;
-    const double f_abs = model.yield(sigma, pc);
-    const Moduli D = model.elasticity().at(mean_pressure(sigma));
-    const Mat3 n_f = model.yield_gradient(sigma, pc);
-    const Mat3 n_g = model.flow_direction(sigma, pc);
-    const Mat3 D_ng = D.stiffness(n_g);
-    const double denominator = ddot(n_f, D_ng) + model.hardening_modulus(sigma, pc);
-    if (denominator > 0.0) {
-      const double d_lambda = f_abs / denominator;
-      const Mat3 trial = sigma - d_lambda * D_ng;
-      const double trial_pc = model.harden(pc, d_lambda * n_g);
-      // With p_c in the normalisation, compared in absolute terms (Pa²): f normalised by the corrected
-      // p_c would call a correction that runs p_c away (1e20 Pa from a 0.26 Pa surface, found by the
-      // stress test) an improvement.
-      const bool better = Model::kHasPreconsolidation
-                              ? std::abs(model.yield(trial, trial_pc)) < std::abs(f_abs)
-                              : std::abs(model.normalized_yield(trial, trial_pc)) < std::abs(f);
-      if (better) {
-        sigma = trial;
-        pc = trial_pc;
-        plastic_strain += d_lambda * n_g;
-        total += d_lambda;
-        continue;
-      }
-    }
-    const double nn = ddot(n_f, n_f);
-    const Mat3 normal = nn > 0.0 ? Mat3(sigma - f_abs / nn * n_f) : sigma;
-    if (!(std::abs(model.normalized_yield(normal, pc)) < std::abs(f))) break;
-    sigma = normal;  // the normal correction keeps p_c (Sloan et al. 2001, eq 41)
-  }
-  if (std::abs(model.normalized_yield(sigma, pc)) > kYieldTolerance) sigma = model.correct(sigma, pc);
-  return total;
 }
 
 /// The fallback when error control cannot converge: the remaining strain by the model's implicit
