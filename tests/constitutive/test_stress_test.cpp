@@ -97,14 +97,15 @@ TEST_CASE("stress test: the error-controlled MCC implicit keeps every state admi
   options.seed = 20261204;
   for (const char* label : {"mcc", "mcc-constant-E"}) {
     const auto materials = stress_test_materials();
-    const auto it = std::find_if(materials.begin(), materials.end(), [&](const auto& m) { return m.label == label; });
+    const auto it =
+        std::find_if(materials.begin(), materials.end(), [&](const auto& m) { return m.label == label; });
     REQUIRE(it != materials.end());
     for (double tolerance : {1e-2, 1e-5}) {
       auto params = std::get<ModifiedCamClay>(it->material).params();
       params.implicit_tolerance = tolerance;
       const StressTestResult r = run_stress_test(ModifiedCamClay(params), Integrator::Implicit, options);
-      INFO(label << ", implicit_tolerance " << tolerance << ": " << r.plastic << " plastic, max f " << r.max_yield
-                 << ", " << r.seconds << " s; " << r.first_problem);
+      INFO(label << ", implicit_tolerance " << tolerance << ": " << r.plastic << " plastic, max f "
+                 << r.max_yield << ", " << r.seconds << " s; " << r.first_problem);
       CHECK(r.increments == options.increments);
       CHECK(r.failures == 0);
       CHECK(r.violations == 0);

@@ -26,8 +26,9 @@ ModifiedCamClay table1(Elasticity::Kind kind, double implicit_tolerance) {
 
 }  // namespace
 
-TEST_CASE("MCC implicit with implicit_tolerance = 1e-3: undrained triaxial within 1e-3 of CVODE in 20 increments",
-          "[integrators][cvode]") {
+TEST_CASE(
+    "MCC implicit with implicit_tolerance = 1e-3: undrained triaxial within 1e-3 of CVODE in 20 increments",
+    "[integrators][cvode]") {
   // The target of issue #11 item 4. The expectation is CVODE's curve; the bound is the target.
   // implicit_tolerance bounds the step-doubling estimate of each doubled sub-increment's error, and
   // the result kept is the doubling's local extrapolation (O(h⁴) where the estimate is O(h³)), so the
@@ -40,7 +41,8 @@ TEST_CASE("MCC implicit with implicit_tolerance = 1e-3: undrained triaxial withi
   for (auto kind : {Elasticity::Kind::Constant, Elasticity::Kind::PressureDependent})
     for (double ocr : {1.0, 1.5}) {
       INFO((kind == Elasticity::Kind::Constant ? "constant" : "pressure-dependent") << ", OCR " << ocr);
-      const double error = error_vs_cvode(table1(kind, 1e-3), triaxial(LoadPath::TriaxialUndrained, ocr, 20), "implicit");
+      const double error =
+          error_vs_cvode(table1(kind, 1e-3), triaxial(LoadPath::TriaxialUndrained, ocr, 20), "implicit");
       CHECK(error <= 1e-3);
     }
 }
