@@ -477,7 +477,7 @@ class CamClayReturn {
 /// elastic trial (`trial`, evaluated with any entry: at Δλ = 0 only its entry-free fields are read) is
 /// outside the surface.
 State plastic_return(const ModifiedCamClay& model, const State& start, const CamClayReturn& eqs,
-                     const CamClayReturn::Point& trial, Mat6* tangent, double* local_error) {
+                     const CamClayReturn::Point& trial, Mat6* tangent, ReturnEstimate* estimate) {
   const YieldEntry& entry = eqs.entry();
   // Outer safeguarded Newton on Δλ: f > 0 on [0, lo], f < 0 at hi once found.
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
@@ -527,7 +527,7 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Cam
   accumulate_plastic_strain_from_squared_norm(next, eqs.plastic_strain_squared_norm(x));
   next.plastic_multiplier = x.l;
   if (tangent) *tangent = eqs.tangent(x, true);
-  if (local_error) {
+  if (estimate) {
     // Half the difference between the stress and p_c changes of forward and backward Euler, whose
     // flows are Δλ n(σ_t) and Δλ n(σ_{n+1}) (Sloan, Abbo & Sheng 2001, with implicit ends): D:Δn
     // = −K_t M² Δn_p I + 6G (s − s_t), Δn_p = (2p − p_c) − (2p_t − p_c,n); dp_c/p_c = θ Δλ M² Δn_p.
@@ -537,7 +537,7 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Cam
         std::sqrt(3.0 * std::pow(x.Kt * eqs.M2() * dn_p, 2) + 36.0 * x.G * x.G * ddot(ds, ds));
     const double scale = std::max({std::sqrt(ddot(next.stress, next.stress)),
                                    std::sqrt(ddot(start.stress, start.stress)), 1.0});
-    *local_error = 0.5 * x.l *
+    estimate->euler = 0.5 * x.l *
                    std::max(dn_stress / scale, model.hardening_exponent() * eqs.M2() * std::abs(dn_p));
   }
   return next;
@@ -548,8 +548,8 @@ constexpr double kMinFraction = 1e-6;  ///< smallest sub-increment, as a fractio
 }  // namespace
 
 State implicit_return(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
-                      Mat6* tangent, double* local_error) {
-  if (local_error) *local_error = 0.0;
+                      Mat6* tangent, ReturnEstimate* estimate) {
+  if (estimate) *estimate = ReturnEstimate{};
   if (!(start.pc > 0.0)) throw IntegrationError("implicit (modified-cam-clay): p_c must be positive");
   const IncrementTerms increment(start, strain_increment);
   if (!tangent) {
@@ -579,9 +579,15 @@ State implicit_return(const ModifiedCamClay& model, const State& start, const Ma
   }
   // An increment that starts on the surface (entry t = 0) has the trial's equations.
   const YieldEntry entry = yield_entry(model, increment);
-  if (entry.t == 0.0) return plastic_return(model, start, eqs, trial, tangent, local_error);
+  if (entry.t == 0.0) return plastic_return(model, start, eqs, trial, tangent, estimate);
+  if (estimate) {
+    estimate->elastic_fraction = entry.t;
+    estimate->entry = start;
+    estimate->entry.stress = entry.s - entry.p * identity3();
+    estimate->entry.plastic_multiplier = 0.0;
+  }
   const CamClayReturn entry_eqs(model, increment, model.implicit_alpha(), entry);
-  return plastic_return(model, start, entry_eqs, trial, tangent, local_error);
+  return plastic_return(model, start, entry_eqs, trial, tangent, estimate);
 }
 
 namespace {
@@ -643,13 +649,25 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
     const bool last = fraction >= rest;
     if (last) fraction = rest;
     const Mat3 sub = accepted == 0 && last ? strain_increment : Mat3(fraction * strain_increment);
-    double euler = 0.0;
+    ReturnEstimate first;
     // The first attempt is always the whole increment from the start: its analytic tangent is the
     // one reported (see below).
-    const State whole = implicit_return(model, state, sub, accepted == 0 && last ? tangent : nullptr, &euler);
+    const State whole = implicit_return(model, state, sub, accepted == 0 && last ? tangent : nullptr, &first);
+    const double euler = first.euler;
+    bool accept = euler <= tolerance || fraction <= kMinFraction;
+    if (!accept && first.elastic_fraction > 0.0) {
+      // The elastic part up to the surface is exact (the entry search): take it as a sub-increment
+      // and control the rest from the surface, so no doubled sub-increment straddles the yield
+      // onset, where the midpoint's error is not the smooth C h³ the estimate assumes.
+      state = first.entry;
+      if (++accepted >= kMaxSubincrements)
+        throw IntegrationError("implicit (modified-cam-clay): more than 10000 sub-increments in one increment");
+      done += first.elastic_fraction * fraction;
+      fraction = (1.0 - first.elastic_fraction) * fraction;
+      continue;
+    }
     State next = whole;
     double factor = euler > 0.0 ? 0.9 * std::sqrt(tolerance / euler) : 2.0;
-    bool accept = euler <= tolerance || fraction <= kMinFraction;
     if (!accept) {
       const State half = implicit_return(model, state, 0.5 * sub);
       next = implicit_return(model, half, 0.5 * sub);

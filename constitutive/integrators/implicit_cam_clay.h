@@ -37,19 +37,27 @@
 
 namespace soilsph {
 
+/// What the error-controlled update below learns from one return besides its result.
+struct ReturnEstimate {
+  double euler = 0.0;             ///< the Euler difference R (0 for an elastic step)
+  double elastic_fraction = 0.0;  ///< t* of a start strictly inside that reaches the surface, else 0
+  State entry;                    ///< the exact elastic state at t* (when elastic_fraction > 0)
+};
+
 /// One return over the whole increment (no spin); writes the consistent tangent ∂σ/∂Δε when `tangent`
-/// is not null, and when `local_error` is not null the error estimate of the error-controlled update
-/// below (0 for an elastic step).
+/// is not null, and what the error-controlled update needs when `estimate` is not null.
 State implicit_return(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
-                      Mat6* tangent = nullptr, double* local_error = nullptr);
+                      Mat6* tangent = nullptr, ReturnEstimate* estimate = nullptr);
 
 /// The `implicit` update (no spin). With `implicit_tolerance` = 0 (the default) one implicit_return.
 /// Otherwise error-controlled sub-incrementation: a sub-increment is accepted when the Euler
 /// difference R = ½Δλ‖D:(n(σ_{n+1}) − n(σ_t))‖ (relative to the stress; Sloan, Abbo & Sheng 2001's
 /// estimate with implicit stages, pessimistic for the midpoint) is ≤ implicit_tolerance, or else when
 /// the step-doubling estimate ‖X(h) − X(h/2 + h/2)‖/3 of the midpoint's own O(h³) local error is;
-/// then the two half returns are kept. An increment that needs no split costs one return, as without
-/// control. The tangent is the analytic one of the single return over the whole increment (exact when
+/// then the local extrapolation of the two halves is kept (O(h⁴), back on the surface by the drift
+/// correction). The elastic part of an increment that reaches the surface from inside is taken
+/// exactly, and only the rest is controlled. An increment that needs no split costs one return, as
+/// without control. The tangent is the analytic one of the single return over the whole increment (exact when
 /// the increment is not split, an approximation for the driver's Newton otherwise).
 /// Measured against CVODE and `substep`: docs/integrators.md.
 State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
