@@ -1,0 +1,90 @@
+#!/usr/bin/python3
+"""Cost of `substep` over the error-controlled family of `implicit` at equal error, from one or more
+`soilsph bench point` runs (docs/integrators.md, issue #11 item 4).
+
+For each family (every row whose integrator label starts with "implicit", every one that starts with
+"substep": tolerances, increments and driver sub-steps pooled) the work-precision front is the set of
+rows that no cheaper row beats in error. The CPU time a family needs for an error e is read off its
+front two ways:
+  - grid: the least time of a row with error <= e (what the benchmark's grid happens to hold);
+  - interpolated: log-log interpolation between the two front rows whose errors bracket e (the
+    cost a tolerance between those two grid values would have, if cost and error move together);
+    at or above the least accurate front row, that row's time.
+Each cell is the ratio substep / implicit (> 1: implicit is cheaper), the median over the runs given.
+
+usage: /usr/bin/python3 scripts/equal_error.py DIR [DIR ...]   (each DIR holds work_precision.csv)
+"""
+import csv
+import math
+import statistics
+import sys
+from collections import defaultdict
+
+TARGETS = (1e-3, 3e-4, 1e-4, 3e-5)
+FAMILIES = ("implicit", "substep")
+
+
+def read(directory):
+    with open(f"{directory}/work_precision.csv") as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    points = defaultdict(list)  # (material, path, family) -> [(error, seconds)]
+    for r in rows:
+        family = next((f for f in FAMILIES if r["integrator"].startswith(f)), None)
+        error = max(float(r["error_q"]), float(r["error_p"]))
+        if family and math.isfinite(error):
+            points[(r["material"], r["path"], family)].append((error, float(r["cpu_seconds"])))
+    return points
+
+
+def front(points):
+    """Rows by increasing error whose time is below every more accurate row's."""
+    out, best = [], math.inf
+    for error, seconds in sorted(points):
+        if seconds < best:
+            out.append((error, seconds))
+            best = seconds
+    return out
+
+
+def grid_time(points, target):
+    ok = [s for e, s in points if e <= target]
+    return min(ok) if ok else None
+
+
+def interpolated_time(points, target):
+    f = front(points)
+    if not f or target < f[0][0]:
+        return None
+    if target >= f[-1][0]:
+        return f[-1][1]
+    for (e1, s1), (e2, s2) in zip(f, f[1:]):
+        if e1 <= target <= e2:
+            w = (math.log(target) - math.log(e1)) / (math.log(e2) - math.log(e1))
+            return math.exp((1 - w) * math.log(s1) + w * math.log(s2))
+    return None
+
+
+def main(directories):
+    runs = [read(d) for d in directories]
+    keys = sorted({k[:2] for run in runs for k in run})
+    head = " | ".join(f"{t:.0e}" for t in TARGETS)
+    print(f"| case | path | metric | {head} |")
+    print("|---|---|---|" + "---|" * len(TARGETS))
+    for material, path in keys:
+        for metric, reader in (("interpolated", interpolated_time), ("grid", grid_time)):
+            cells = []
+            for target in TARGETS:
+                ratios = []
+                for run in runs:
+                    ti = reader(run.get((material, path, "implicit"), []), target)
+                    ts = reader(run.get((material, path, "substep"), []), target)
+                    if ti and ts:
+                        ratios.append(ts / ti)
+                cells.append(f"{statistics.median(ratios):.2f}" if ratios else "-")
+            print(f"| {material} | {path} | {metric} | " + " | ".join(cells) + " |")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    main(sys.argv[1:])
