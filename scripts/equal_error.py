@@ -11,8 +11,9 @@ front two ways:
     cost a tolerance between those two grid values would have, if cost and error move together);
     at or above the least accurate front row, that row's time.
 Each cell is the ratio substep / implicit (> 1: implicit is cheaper), the median over the runs given.
+With --plot PNG, the two fronts of the first run, one panel per case and path.
 
-usage: /usr/bin/python3 scripts/equal_error.py DIR [DIR ...]   (each DIR holds work_precision.csv)
+usage: /usr/bin/python3 scripts/equal_error.py [--plot PNG] DIR [DIR ...]   (each DIR holds work_precision.csv)
 """
 import csv
 import math
@@ -64,8 +65,39 @@ def interpolated_time(points, target):
     return None
 
 
-def main(directories):
+def plot(run, path_png):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    materials = sorted({k[0] for k in run})
+    paths = sorted({k[1] for k in run})
+    fig, axes = plt.subplots(len(materials), len(paths), figsize=(5 * len(paths), 3.8 * len(materials)),
+                             squeeze=False)
+    for i, material in enumerate(materials):
+        for j, path in enumerate(paths):
+            ax = axes[i][j]
+            for family, colour in zip(FAMILIES, ("C0", "C1")):
+                f = front(run.get((material, path, family), []))
+                if f:
+                    ax.loglog([s for _, s in f], [e for e, _ in f], marker="o", markersize=3, color=colour,
+                              label=f"{family} (every tolerance, increments, path sub-steps)")
+            ax.set_title(f"{material}, {path}", fontsize=9)
+            ax.set_xlabel("CPU time per path (s)")
+            ax.set_ylabel("max relative error in q, p' vs CVODE")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=7)
+    fig.suptitle("Work-precision fronts: the cheapest run of each family at each error "
+                 "(p', q compression-positive)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path_png, dpi=110)
+
+
+def main(directories, path_png=None):
     runs = [read(d) for d in directories]
+    if path_png:
+        plot(runs[0], path_png)
     keys = sorted({k[:2] for run in runs for k in run})
     head = " | ".join(f"{t:.0e}" for t in TARGETS)
     print(f"| case | path | metric | {head} |")
@@ -85,6 +117,10 @@ def main(directories):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 2:
+    args = sys.argv[1:]
+    png = None
+    if args[:1] == ["--plot"] and len(args) >= 2:
+        png, args = args[1], args[2:]
+    if not args:
         sys.exit(__doc__)
-    main(sys.argv[1:])
+    main(args, png)

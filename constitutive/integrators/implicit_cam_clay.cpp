@@ -636,8 +636,9 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
   //     kept is their local extrapolation (`extrapolated`: O(h⁴), back on the surface by the drift
   //     correction) when both the whole and the second half end plastic, as `substep` keeps its
   //     modified-Euler result while its estimate is Euler's: the error per tolerance fell 10–30× on
-  //     the stiff clay's undrained paths, and the cost at equal error by 1.5–2× (docs/integrators.md).
-  // The whole rest of the increment is tried first. A rejected sub-increment shrinks by the factor
+  //     the stiff clay's undrained paths (docs/integrators.md, with the cost at equal error).
+  // The whole rest of the increment is tried first (its elastic part up to the surface exactly, see
+  // below). A rejected sub-increment shrinks by the factor
   // that would meet tol, 0.9 (tol/E)^⅓ (0.9 √(tol/R) on the Euler branch, R ∝ h²), in [0.1, 0.9];
   // an accepted one lets the next grow by the same rule, at most 2×. Sub-increments ≥ kMinFraction
   // of the increment, at most kMaxSubincrements.
