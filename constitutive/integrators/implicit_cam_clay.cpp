@@ -638,10 +638,10 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
   //     modified-Euler result while its estimate is Euler's: the error per tolerance fell 10–30× on
   //     the stiff clay's undrained paths (docs/integrators.md, with the cost at equal error).
   // The whole rest of the increment is tried first (its elastic part up to the surface exactly, see
-  // below). A rejected sub-increment shrinks by the factor
-  // that would meet tol, 0.9 (tol/E)^⅓ (0.9 √(tol/R) on the Euler branch, R ∝ h²), in [0.1, 0.9];
-  // an accepted one lets the next grow by the same rule, at most 2×. Sub-increments ≥ kMinFraction
-  // of the increment, at most kMaxSubincrements.
+  // below). A rejected sub-increment shrinks by the factor that would meet tol, 0.9 (tol/E)^⅓
+  // (0.9 √(tol/R) on the Euler branch, R ∝ h²), in [0.1, 0.9]; an accepted one lets the next grow by
+  // the same rule, at most 2×. Sub-increments ≥ kMinFraction of the increment, at most
+  // kMaxSubincrements.
   State state = start;
   double done = 0.0, fraction = 1.0, multiplier = 0.0;
   int accepted = 0;
@@ -664,7 +664,7 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
       if (++accepted >= kMaxSubincrements)
         throw IntegrationError("implicit (modified-cam-clay): more than 10000 sub-increments in one increment");
       done += first.elastic_fraction * fraction;
-      fraction = (1.0 - first.elastic_fraction) * fraction;
+      fraction = last ? 1.0 - done : (1.0 - first.elastic_fraction) * fraction;
       continue;
     }
     State next = whole;

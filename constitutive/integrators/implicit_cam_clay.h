@@ -57,8 +57,8 @@ State implicit_return(const ModifiedCamClay& model, const State& start, const Ma
 /// then the local extrapolation of the two halves is kept (O(h⁴), back on the surface by the drift
 /// correction). The elastic part of an increment that reaches the surface from inside is taken
 /// exactly, and only the rest is controlled. An increment that needs no split costs one return, as
-/// without control. The tangent is the analytic one of the single return over the whole increment (exact when
-/// the increment is not split, an approximation for the driver's Newton otherwise).
+/// without control. The tangent is the analytic one of the single return over the whole increment
+/// (exact when the increment is not split, an approximation for the driver's Newton otherwise).
 /// Measured against CVODE and `substep`: docs/integrators.md.
 State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
                       Mat6* tangent = nullptr);
