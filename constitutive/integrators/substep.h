@@ -99,15 +99,23 @@ double pegasus(const G& g, double a, double b, double ga, double gb) {
   throw IntegrationError("substep: the yield-surface intersection (Pegasus) did not converge");
 }
 
+/// What the accepted substeps have accumulated so far: the stress, p_c, the plastic strain and the
+/// plastic multiplier.
+struct SubstepPath {
+  Mat3 sigma;
+  double pc;
+  Mat3 plastic_strain = Mat3::Zero();
+  double multiplier = 0.0;
+};
+
 /// The fallback when error control cannot converge: the remaining strain by the model's implicit
 /// return from the current substep state, with the accumulated measures of the substeps before it.
 template <class Model>
-State finish_implicitly(const Model& model, const State& start, const Mat3& sigma, double pc,
-                        const Mat3& plastic_strain, double multiplier, const Mat3& remaining) {
+State finish_implicitly(const Model& model, const State& start, const SubstepPath& path, const Mat3& remaining) {
   State mid = start;
-  mid.stress = sigma;
-  mid.pc = pc;
-  accumulate_plastic_strain(mid, plastic_strain);
+  mid.stress = path.sigma;
+  mid.pc = path.pc;
+  accumulate_plastic_strain(mid, path.plastic_strain);
   State next;
   try {
     next = implicit_update(model, mid, remaining);
@@ -118,13 +126,131 @@ State finish_implicitly(const Model& model, const State& start, const Mat3& sigm
         "increment failed: " +
         std::string(e.what()));
   }
-  next.plastic_multiplier = std::max(next.plastic_multiplier + multiplier, 0.0);
+  next.plastic_multiplier = std::max(next.plastic_multiplier + path.multiplier, 0.0);
+  return next;
+}
+
+/// finish_implicitly where the model has an implicit return; else the error `failure`.
+template <class Model>
+State finish_implicitly_or_fail(const Model& model, const State& start, const SubstepPath& path,
+                                const Mat3& remaining, const std::string& failure) {
+  if constexpr (requires { implicit_update(model, start, remaining); })
+    return finish_implicitly(model, start, path, remaining);
+  else
+    throw IntegrationError(failure);
+}
+
+/// The state at the cut-off when the elastic trial lies past a model's tension cut-off (the D-P
+/// apex): the model's correct() state, with the plastic strain the elastic compliance leaves.
+template <class Model>
+State tension_cutoff_return(const Model& model, const State& start, const Mat3& trial, const Mat3& strain_increment,
+                            double p0) {
+  State next = start;
+  next.stress = model.correct(trial, start.pc);
+  accumulate_plastic_strain(next, strain_increment - model.elasticity().at(p0).compliance(next.stress - start.stress));
+  next.plastic_multiplier = std::sqrt(second_deviatoric_invariant(trial)) / model.elasticity().at(p0).G;
+  return next;
+}
+
+/// Step 2: the elastic fraction α of the increment, on the path σ(α) = `elastic_at(α)` from the
+/// start (α = 1 is the trial).
+template <class Model, class ElasticAt>
+double elastic_fraction(const Model& model, const State& start, const Mat3& trial, const ElasticAt& elastic_at) {
+  auto g = [&](double alpha) { return model.normalized_yield(elastic_at(alpha), start.pc); };
+  const double f0 = model.normalized_yield(start.stress, start.pc);
+  const double f1 = model.normalized_yield(trial, start.pc);
+  if (f0 < -kYieldTolerance) return pegasus(g, 0.0, 1.0, f0, f1);
+  const Mat3 n_f = model.yield_gradient(start.stress, start.pc);
+  const Mat3 d_sigma = trial - start.stress;
+  const double cosine = ddot(n_f, d_sigma) / std::max(n_f.norm() * d_sigma.norm(), 1e-300);
+  if (cosine < -kLoadingTolerance) {  // elastic-plastic unloading: find where the path is inside
+    for (int j = 1; j < kUnloadingScan; ++j) {
+      const double a = static_cast<double>(j) / kUnloadingScan;
+      const double ga = g(a);
+      if (ga < -kYieldTolerance) return pegasus(g, a, 1.0, ga, f1);
+    }
+  }
+  return 0.0;
+}
+
+/// One modified-Euler substep over `d_eps` from `path`, and its local error estimate (relative to
+/// the stress, not below `stress_scale`; infinite for a non-finite result).
+struct ModifiedEulerStep {
+  Mat3 sigma;
+  double pc;
+  Mat3 d_plastic;
+  double d_lambda;
+  double error;
+};
+
+template <class Model>
+ModifiedEulerStep modified_euler_step(const Model& model, const SubstepPath& path, const Mat3& d_eps,
+                                      double stress_scale) {
+  const PlasticRate r1 = plastic_rate(model, path.sigma, path.pc, d_eps);
+  const PlasticRate r2 = plastic_rate(model, Mat3(path.sigma + r1.d_stress), r1.pc, d_eps);
+  ModifiedEulerStep step{.sigma = path.sigma + 0.5 * (r1.d_stress + r2.d_stress),
+                         .pc = 0.0,
+                         .d_plastic = 0.5 * (r1.d_plastic_strain + r2.d_plastic_strain),
+                         .d_lambda = 0.5 * (r1.d_lambda + r2.d_lambda),
+                         .error = 0.0};
+  step.pc = model.harden(path.pc, step.d_plastic);
+  step.error = 0.5 * (r2.d_stress - r1.d_stress).norm() / std::max(step.sigma.norm(), stress_scale);
+  if (path.pc > 0.0)
+    step.error = std::max(step.error, 0.5 * std::abs(model.harden(path.pc, r2.d_plastic_strain) - r1.pc) / step.pc);
+  // A non-finite rate (Δλ → ∞ where softening cancels the elastic stiffness, p_c overflowing) is
+  // a rejected substep: a smaller one is finite.
+  if (!std::isfinite(step.error) || !step.sigma.allFinite() || (path.pc > 0.0 && !(step.pc > 0.0)))
+    step.error = std::numeric_limits<double>::infinity();
+  return step;
+}
+
+/// Steps 3 and 4: the plastic part `remaining` of the increment in pseudo-time T ∈ [0, 1] by
+/// error-controlled modified-Euler substeps from `path`, each followed by the drift correction.
+template <class Model>
+State integrate_plastic_part(const Model& model, const State& start, SubstepPath path, const Mat3& remaining) {
+  const double tolerance = model.substep_tolerance();
+  // Errors relative to the stress, but not below the stress at the start of the increment: near a
+  // stress-free D-P apex a purely relative measure would ask for absolute accuracy → 0.
+  const double stress_scale = std::max(start.stress.norm(), kStressFloor);
+  double T = 0.0, dT = 1.0;
+  bool rejected = false;
+  int substeps = 0;
+  while (T < 1.0) {
+    const ModifiedEulerStep step = modified_euler_step(model, path, dT * remaining, stress_scale);
+    if (step.error > tolerance && dT <= kMinStepFraction)  // e.g. the D-P apex: the cone is scale-free
+      return finish_implicitly_or_fail(model, start, path, (1.0 - T) * remaining,
+                                       "substep: substep below the minimum size");
+    if (step.error > tolerance) {
+      dT = std::max(std::max(0.9 * std::sqrt(tolerance / step.error), 0.1) * dT, kMinStepFraction);
+      rejected = true;
+      continue;
+    }
+    path.sigma = step.sigma;
+    path.pc = step.pc;
+    path.plastic_strain += step.d_plastic;
+    path.multiplier += step.d_lambda;
+    path.multiplier += correct_drift(model, path.sigma, path.pc, path.plastic_strain);
+    T += dT;
+    if (++substeps > max_substeps(tolerance) && T < 1.0)
+      return finish_implicitly_or_fail(
+          model, start, path, (1.0 - T) * remaining,
+          "substep: more than " + std::to_string(max_substeps(tolerance)) + " substeps in one increment");
+    double growth = step.error > 0.0 ? std::min(0.9 * std::sqrt(tolerance / step.error), 1.1) : 1.1;
+    if (rejected) growth = std::min(growth, 1.0);
+    rejected = false;
+    dT = std::min(std::max(growth * dT, kMinStepFraction), 1.0 - T);
+  }
+  State next = start;
+  next.stress = path.sigma;
+  next.pc = path.pc;
+  accumulate_plastic_strain(next, path.plastic_strain);
+  next.plastic_multiplier = std::max(path.multiplier, 0.0);
   return next;
 }
 }  // namespace substep_detail
 
-/// One increment by error-controlled modified-Euler substepping. Works for any model that provides
-/// what explicit_update() needs plus substep_tolerance().
+/// One increment by error-controlled modified-Euler substepping (steps 1–4 above). Works for any
+/// model that provides what explicit_update() needs plus substep_tolerance().
 template <class Model>
 State substep_update(const Model& model, const State& start, const Mat3& strain_increment) {
   using namespace substep_detail;
@@ -134,109 +260,17 @@ State substep_update(const Model& model, const State& start, const Mat3& strain_
     return Mat3(start.stress + model.elasticity().secant(p0, -d_eps.trace()).stiffness(d_eps));
   };
   const Mat3 trial = elastic_at(1.0);
-  State next = start;
-  next.plastic_multiplier = 0.0;
   if (model.normalized_yield(trial, start.pc) <= kYieldTolerance) {
+    State next = start;
+    next.plastic_multiplier = 0.0;
     next.stress = trial;
     return next;
   }
-  if constexpr (requires { model.beyond_tension_cutoff(trial); }) {
-    if (model.beyond_tension_cutoff(trial)) {
-      next.stress = model.correct(trial, start.pc);
-      accumulate_plastic_strain(
-          next, strain_increment - model.elasticity().at(p0).compliance(next.stress - start.stress));
-      next.plastic_multiplier = std::sqrt(second_deviatoric_invariant(trial)) / model.elasticity().at(p0).G;
-      return next;
-    }
-  }
-
-  // Elastic fraction α of the increment.
-  auto g = [&](double alpha) { return model.normalized_yield(elastic_at(alpha), start.pc); };
-  const double f0 = model.normalized_yield(start.stress, start.pc);
-  const double f1 = model.normalized_yield(trial, start.pc);
-  double alpha = 0.0;
-  if (f0 < -kYieldTolerance) {
-    alpha = pegasus(g, 0.0, 1.0, f0, f1);
-  } else {
-    const Mat3 n_f = model.yield_gradient(start.stress, start.pc);
-    const Mat3 d_sigma = trial - start.stress;
-    const double cosine = ddot(n_f, d_sigma) / std::max(n_f.norm() * d_sigma.norm(), 1e-300);
-    if (cosine < -kLoadingTolerance) {  // elastic-plastic unloading: find where the path is inside
-      for (int j = 1; j < kUnloadingScan; ++j) {
-        const double a = static_cast<double>(j) / kUnloadingScan;
-        const double ga = g(a);
-        if (ga < -kYieldTolerance) {
-          alpha = pegasus(g, a, 1.0, ga, f1);
-          break;
-        }
-      }
-    }
-  }
-
-  Mat3 sigma = alpha > 0.0 ? elastic_at(alpha) : start.stress;
-  double pc = start.pc;
-  Mat3 plastic_strain = Mat3::Zero();
-  double multiplier = 0.0;
-  const Mat3 remaining = (1.0 - alpha) * strain_increment;
-  const double tolerance = model.substep_tolerance();
-  // Errors relative to the stress, but not below the stress at the start of the increment: near a
-  // stress-free D-P apex a purely relative measure would ask for absolute accuracy → 0.
-  const double stress_scale = std::max(start.stress.norm(), kStressFloor);
-  double T = 0.0, dT = 1.0;
-  bool rejected = false;
-  int substeps = 0;
-  while (T < 1.0) {
-    const Mat3 d_eps = dT * remaining;
-    const PlasticRate r1 = plastic_rate(model, sigma, pc, d_eps);
-    const PlasticRate r2 = plastic_rate(model, Mat3(sigma + r1.d_stress), r1.pc, d_eps);
-    const Mat3 sigma_new = sigma + 0.5 * (r1.d_stress + r2.d_stress);
-    const Mat3 d_plastic = 0.5 * (r1.d_plastic_strain + r2.d_plastic_strain);
-    const double pc_new = model.harden(pc, d_plastic);
-    double error = 0.5 * (r2.d_stress - r1.d_stress).norm() / std::max(sigma_new.norm(), stress_scale);
-    if (pc > 0.0)
-      error = std::max(error, 0.5 * std::abs(model.harden(pc, r2.d_plastic_strain) - r1.pc) / pc_new);
-    // A non-finite rate (Δλ → ∞ where softening cancels the elastic stiffness, p_c overflowing) is
-    // a rejected substep: a smaller one is finite.
-    if (!std::isfinite(error) || !sigma_new.allFinite() || (pc > 0.0 && !(pc_new > 0.0)))
-      error = std::numeric_limits<double>::infinity();
-    if (error > tolerance && dT <= kMinStepFraction) {
-      if constexpr (requires { implicit_update(model, start, strain_increment); }) {
-        // The error does not decrease with the step (e.g. the D-P apex: the cone is scale-free):
-        // the rest of the increment by the model's closest-point projection.
-        return finish_implicitly(model, start, sigma, pc, plastic_strain, multiplier, (1.0 - T) * remaining);
-      } else {
-        throw IntegrationError("substep: substep below the minimum size");
-      }
-    }
-    if (error > tolerance) {
-      dT = std::max(std::max(0.9 * std::sqrt(tolerance / error), 0.1) * dT, kMinStepFraction);
-      rejected = true;
-      continue;
-    }
-    sigma = sigma_new;
-    pc = pc_new;
-    plastic_strain += d_plastic;
-    multiplier += 0.5 * (r1.d_lambda + r2.d_lambda);
-    multiplier += correct_drift(model, sigma, pc, plastic_strain);
-    T += dT;
-    if (++substeps > max_substeps(tolerance) && T < 1.0) {
-      if constexpr (requires { implicit_update(model, start, strain_increment); }) {
-        return finish_implicitly(model, start, sigma, pc, plastic_strain, multiplier, (1.0 - T) * remaining);
-      } else {
-        throw IntegrationError("substep: more than " + std::to_string(max_substeps(tolerance)) +
-                               " substeps in one increment");
-      }
-    }
-    double growth = error > 0.0 ? std::min(0.9 * std::sqrt(tolerance / error), 1.1) : 1.1;
-    if (rejected) growth = std::min(growth, 1.0);
-    rejected = false;
-    dT = std::min(std::max(growth * dT, kMinStepFraction), 1.0 - T);
-  }
-  next.stress = sigma;
-  next.pc = pc;
-  accumulate_plastic_strain(next, plastic_strain);
-  next.plastic_multiplier = std::max(multiplier, 0.0);
-  return next;
+  if constexpr (requires { model.beyond_tension_cutoff(trial); })
+    if (model.beyond_tension_cutoff(trial)) return tension_cutoff_return(model, start, trial, strain_increment, p0);
+  const double alpha = elastic_fraction(model, start, trial, elastic_at);
+  const SubstepPath path{.sigma = alpha > 0.0 ? elastic_at(alpha) : start.stress, .pc = start.pc};
+  return integrate_plastic_part(model, start, path, (1.0 - alpha) * strain_increment);
 }
 
 }  // namespace soilsph

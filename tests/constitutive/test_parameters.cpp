@@ -271,7 +271,8 @@ TEST_CASE("a described material reads back to the same parameters", "[parameters
                                 "integrator = \"substep\"\nsubstep_tolerance = 3e-7\n"
                                 "plastic_potential = \"paper-eq20\"\n");
   const auto& a = std::get<DruckerPrager>(dp).params();
-  const auto& b = std::get<DruckerPrager>(read_back(dp)).params();
+  const Material dp_read = read_back(dp);  // kept: params() refers into it
+  const auto& b = std::get<DruckerPrager>(dp_read).params();
   CHECK(std::tie(a.density, a.young_modulus, a.poisson_ratio, a.friction_angle, a.cohesion, a.dilatancy_angle,
                  a.plastic_potential, a.integrator, a.substep_tolerance) ==
         std::tie(b.density, b.young_modulus, b.poisson_ratio, b.friction_angle, b.cohesion, b.dilatancy_angle,
@@ -282,7 +283,8 @@ TEST_CASE("a described material reads back to the same parameters", "[parameters
   const Material mcc = from_text(kCamClay + "elastic_pressure_floor = 1.0e-1\nintegrator = \"explicit\"\n" +
                                  "substep_tolerance = 1e-9\nimplicit_alpha = 0.75\n");
   const auto& c = std::get<ModifiedCamClay>(mcc).params();
-  const auto& d = std::get<ModifiedCamClay>(read_back(mcc)).params();
+  const Material mcc_read = read_back(mcc);
+  const auto& d = std::get<ModifiedCamClay>(mcc_read).params();
   CHECK(std::tie(c.density, c.poisson_ratio, c.friction_angle, c.compression_index, c.swelling_index,
                  c.initial_void_ratio, c.elasticity, c.elastic_pressure_floor, c.integrator,
                  c.substep_tolerance, c.implicit_alpha) ==
@@ -341,15 +343,17 @@ TEST_CASE("a model built in code checks its derived constants, as a file's mater
 
 TEST_CASE("a model built in code has the defaults of an input file", "[parameters]") {
   const DruckerPrager::Params dp_code;
-  const auto& dp_toml = std::get<DruckerPrager>(from_text(
+  const Material dp_read = from_text(
       "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\nyoung_modulus = 1.0e6\n"
-      "poisson_ratio = 0.3\nfriction_angle = 35.0\n")).params();
+      "poisson_ratio = 0.3\nfriction_angle = 35.0\n");  // kept: params() refers into it
+  const auto& dp_toml = std::get<DruckerPrager>(dp_read).params();
   CHECK(dp_code.integrator == dp_toml.integrator);
   CHECK(dp_code.integrator == Integrator::Implicit);
   CHECK(std::tie(dp_code.cohesion, dp_code.dilatancy_angle, dp_code.plastic_potential, dp_code.substep_tolerance) ==
         std::tie(dp_toml.cohesion, dp_toml.dilatancy_angle, dp_toml.plastic_potential, dp_toml.substep_tolerance));
   const ModifiedCamClay::Params mcc_code;
-  const auto& mcc_toml = std::get<ModifiedCamClay>(from_text(kCamClay)).params();
+  const Material mcc_read = from_text(kCamClay);
+  const auto& mcc_toml = std::get<ModifiedCamClay>(mcc_read).params();
   CHECK(std::tie(mcc_code.integrator, mcc_code.elasticity, mcc_code.elastic_pressure_floor,
                  mcc_code.substep_tolerance, mcc_code.implicit_alpha, mcc_code.implicit_tolerance) ==
         std::tie(mcc_toml.integrator, mcc_toml.elasticity, mcc_toml.elastic_pressure_floor,
@@ -358,7 +362,7 @@ TEST_CASE("a model built in code has the defaults of an input file", "[parameter
 
 TEST_CASE("mohr-coulomb reads the D-P keys and an optional tension cut-off", "[parameters][mohr-coulomb]") {
   const std::string mc = replace(kDruckerPrager, "model = \"drucker-prager\"", "model = \"mohr-coulomb\"");
-  const auto& plain = std::get<MohrCoulomb>(from_text(mc));
+  const MohrCoulomb plain = std::get<MohrCoulomb>(from_text(mc));
   CHECK(plain.params().tension_cutoff == MohrCoulomb::Params::kNoTensionCutoff);
   CHECK(plain.integrator() == Integrator::Implicit);
   CHECK(std::get<MohrCoulomb>(from_text(mc + "tension_cutoff = 1000.0\n")).tension_cutoff() == 1000.0);
