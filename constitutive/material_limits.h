@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Upper bounds of material keys beyond which results lose meaning (README.md, "Materials").
+/// Upper bounds of material keys beyond which results lose meaning (docs/reference/materials.md).
 #include "constitutive/parameters.h"
 
 namespace soilsph::limits {

@@ -32,7 +32,7 @@ Mat3 skew(std::mt19937_64& rng, double scale) {
 
 /// Every fourth fresh state of a model with p_c is "dust": p from 1e-9 to 1 Pa, the free-surface
 /// particles of an SPH collapse, whose surface is tiny against one increment's trial (where an MCC
-/// return once accepted a non-root, docs/integrators.md); the others are 1–200 kPa.
+/// return once accepted a non-root, docs/method/integrators.md); the others are 1–200 kPa.
 template <class Model>
 State fresh_state(const Model&, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);

@@ -10,7 +10,7 @@
 /// in [1e-6, max_increment]; each carries a random spin of the same order. The walk restarts from
 /// a fresh random state every `restart_every` increments, after a failure, and when the state leaves
 /// the range where it means anything (|p| > 1 GPa, or MCC p_c outside 1e-9 Pa–1 GPa). A quarter of
-/// the MCC starts are free-surface "dust" (p from 1e-9 to 1 Pa). See docs/integrators.md.
+/// the MCC starts are free-surface "dust" (p from 1e-9 to 1 Pa). See docs/method/integrators.md.
 #include <algorithm>
 #include <cstdint>
 #include <string>

@@ -14,7 +14,7 @@
 /// Why: a softening model without a material length (MCC on the dry side) localises into shear
 /// bands as thin as the discretisation, so its SPH deposit moves with resolution. The relaxation
 /// gives the bands a width (in waves about the P-wave speed times τ; in the slow flow of a collapse
-/// set by the viscosity G τ), and the deposit converges (docs/sph.md, "A material length for MCC").
+/// set by the viscosity G τ), and the deposit converges (docs/validation/resolution.md).
 /// It needs a time, so it acts in the SPH solver only: the material-point driver is
 /// rate-independent and ignores it with a warning.
 #include "constitutive/elasticity.h"

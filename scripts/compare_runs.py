@@ -5,8 +5,8 @@ number of frames, and every dataset of the final frame (exact equality, NaN equa
 
     /usr/bin/python3 scripts/compare_runs.py DIR_A DIR_B
 
-Prints the differences and exits 1 if there is any (the check that the column shorthand, rebuilt
-through the geometry layout, gives the same runs as before; docs/scenes.md). A summary field or a
+Prints the differences and exits 1 if there is any (e.g. to check that a change of code leaves the
+shipped runs bit-identical; docs/validation/scenes.md). A summary field or a
 dataset that only the second run has is listed as added, not a difference: a newer soilsph writes
 more than an older one (e.g. the `material` field and the summary's `materials`)."""
 import json

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Cost of `substep` over the error-controlled family of `implicit` at equal error, from one or more
-`soilsph bench point` runs (docs/integrators.md, issue #11 item 4).
+`soilsph bench point` runs (docs/method/integrators.md).
 
 For each family (every row whose integrator label starts with "implicit", every one that starts with
 "substep": tolerances, increments and driver sub-steps pooled) the work-precision front is the set of

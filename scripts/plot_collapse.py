@@ -3,7 +3,7 @@
 
     plot_collapse.py DIR [--compare DIR2 ...] [--colour layer|material] [--labels LABEL ...]
 
-reads DIR/frames.h5 and DIR/summary.json (docs/sph-output.md) and writes
+reads DIR/frames.h5 and DIR/summary.json (docs/reference/output-formats.md) and writes
   DIR/velocity_t0.05.png ... _t0.20.png  velocity magnitude at the frame nearest each time (paper Fig. 4)
   DIR/velocity.png                        the four snapshots together (2 x 2)
   DIR/deposit.png                         final deposit in horizontal layers of two alternating colours
@@ -60,7 +60,7 @@ class Run:
         model = self.summary.get("model")
         self.label = MODEL_NAMES.get(model, model) if model else self.dir.name
         # A run that did not finish is said so on every picture, and its figures are not quoted
-        # (summary.json "complete" and "stop_reason"; docs/sph-output.md, Run records).
+        # (summary.json "complete" and "stop_reason"; docs/reference/output-formats.md).
         self.complete = self.summary.get("complete") is True
         if not self.complete:
             why = (f"stopped: {self.summary['stop_reason']}" if self.summary.get("stop_reason")
@@ -266,8 +266,8 @@ def plot_compare_velocity(runs):
 
 
 def read_history(path):
-    """A history CSV (docs/sph-output.md) as {name: {column: array}}, rows grouped by their second
-    column (the boundary or gauge)."""
+    """A history CSV (docs/reference/output-formats.md) as {name: {column: array}}, rows grouped by
+    their second column (the boundary or gauge)."""
     with open(path) as f:
         lines = [line.rstrip("\n") for line in f if line.strip() and not line.startswith("#")]
     header, rows = lines[0].split(","), [line.split(",") for line in lines[1:]]

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plot material-point CSVs of `soilsph point`, one or more overlaid in one figure (issue #11).
+"""Plot material-point CSVs of `soilsph point`, one or more overlaid in one figure.
 
     plot_point.py CSV [CSV ...] [--out FILE.png] [--labels A,B,...]
 

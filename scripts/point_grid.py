@@ -6,7 +6,7 @@ integrator against the CVODE reference.
                           [--increments 100] [--jobs 2] [--quick] [--no-tension-cutoff] [--check]
                           [--binary PATH]
 
-Axes (the Mohr-Coulomb grid of README "Known limits"): drained and undrained triaxial to
+Axes (the Mohr-Coulomb grid of docs/validation/known-limits.md): drained and undrained triaxial to
 eps_a = 0.3 and -0.2, psi = 0/10/20 deg, c = 0/5 kPa, E = 1/10/100 MPa, p0 = 1 kPa/100 kPa/1 MPa,
 and no tension cut-off or T = 0 (`--quick`: one value of psi, c, E and p0, for a smoke test;
 `--no-tension-cutoff` for a model without that key, e.g. data/materials/dp-table1.toml). With

@@ -27,7 +27,7 @@ resolution: spacing 4, 2, 1 and 0.5 mm for both shipped scenes (--models: some o
   --smoothing-length MM keeps h at MM millimetres in every run (smoothing_ratio = h/dp, which the
   scene allows from 1 to 2) instead of the scene's h/dp: it refines the particles within one kernel.
   A softening soil's shear bands are about h wide, so this separates the deposit's dependence on
-  the particles from its dependence on the kernel (docs/sph.md, "Why MCC does not converge").
+  the particles from its dependence on the kernel (docs/validation/resolution.md).
 cfl: the shipped scenes at one spacing for each CFL number, with the shipped and the implicit
   integrator; a run counts as unstable if it fails, if the wall guard acts, or if it is not at rest by
   its end time (2 s). Writes DIR/cfl.csv and DIR/cfl.md.
@@ -57,12 +57,12 @@ import tomllib
 from concurrent.futures import ThreadPoolExecutor
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-# The binary: $SOILSPH_BINARY (the tests give their build's), else the README's build.
+# The binary: $SOILSPH_BINARY (the tests give their build's), else build/apps/soilsph/soilsph.
 SOILSPH = pathlib.Path(os.environ.get("SOILSPH_BINARY", ROOT / "build" / "apps" / "soilsph" / "soilsph"))
 SCENES = {"D-P": "collapse-dp", "MCC": "collapse-mcc"}
 # Variants the resolution study runs on request (--models): label -> (run prefix, scene, --set values).
 # MCC-viscous: the paper's MCC scene with the Duvaut-Lions relaxation whose deposit converges,
-# G tau = 45 Pa s on Table 1's E; it rests after about 1.3 s (docs/sph.md, "A material length for MCC").
+# G tau = 45 Pa s on Table 1's E; it rests after about 1.3 s (docs/validation/resolution.md).
 VARIANTS = {"MCC-viscous": ("collapse-mcc-viscous", "collapse-mcc",
                             ["material.viscoplastic_relaxation_time=1.16e-4", "scene.end_time=3"])}
 RESOLUTION_MODELS = {**{label: (scene, scene, []) for label, scene in SCENES.items()}, **VARIANTS}

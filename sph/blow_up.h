@@ -44,7 +44,7 @@ struct Domain {
 /// The hint every message ends with: what usually makes an SPH step unstable.
 inline constexpr const char* kBlowUpHint =
     " (a smaller [numerics] cfl, a stiffer material or more artificial viscosity usually helps; "
-    "docs/sph.md, Blow-up detection)";
+    "docs/method/sph.md)";
 
 /// True if particle i's close-of-step state is sane: speed² v2 at most c², density finite and
 /// positive, inside the domain. NaN fails every comparison, so a non-finite value is never sane.

@@ -21,9 +21,9 @@ struct RunEstimate {
 };
 
 /// Particle-steps per second assumed by the estimate: the slowest measured one-thread rate
-/// (MCC with `implicit`, 0.6e6; D-P runs 1.3–2.2e6; docs/sph.md, Performance), rounded down.
+/// (MCC with `implicit`, 0.6e6; D-P runs 1.3–2.2e6; docs/performance.md), rounded down.
 inline constexpr double kAssumedThroughput = 5e5;
-/// Bytes per particle (soil or ghost): measured 2645 B with 48 neighbour slots (docs/sph.md).
+/// Bytes per particle (soil or ghost): measured 2645 B with 48 neighbour slots (docs/method/sph.md).
 inline constexpr double kBytesPerParticle = 2700;
 
 /// Most frames a run may write: each frame rewrites the indexes of all before it

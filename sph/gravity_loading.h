@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The gravity-loading stage (issue #12 item 3, `[initial] stress = "gravity-loading"`): before
+/// The gravity-loading stage (`[initial] stress = "gravity-loading"`): before
 /// t = 0 the soil, starting from K0 under its local free surface, is relaxed quasi-statically under
 /// gravity with every wall in place and still, by dynamic relaxation (Underwood 1983, "Dynamic
 /// relaxation", in Belytschko & Hughes (eds.), Computational Methods for Transient Analysis, ch. 5:

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Reads what a scene measures (docs/scenes.md): [deposit], the frame of the deposit measures, and
+/// Reads what a scene measures (docs/reference/scenes.md): [deposit], the frame of the deposit measures, and
 /// [[gauges]], the points sampled over time; every key validated, each error naming the file, the
 /// table and the key.
 #include <string>

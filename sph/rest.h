@@ -17,7 +17,7 @@
 /// or stop_at_rest = false.
 /// Defaults scale with the column: speed 1 % of the free-fall speed √(2 g H), duration √(H/g)
 /// (1.08 cm/s and 0.078 s for the paper's 6 cm column). Keys: [scene] stop_at_rest, rest_speed,
-/// rest_duration, rest_fraction (docs/sph.md).
+/// rest_duration, rest_fraction (docs/method/sph.md).
 #include <cmath>
 #include <cstddef>
 

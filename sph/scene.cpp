@@ -101,7 +101,7 @@ void read_column(const TableReader& t, const toml::table& table, const toml::tab
                            "");
   const toml::array added = read_boundaries(root, t.source(), g.layout.walls);
   if (!added.empty()) extra.insert("boundaries", added);
-  g.surface_level = g.column_height + 0.5 * g.particle_spacing;  // the box's top, as the geostatic stress always had it
+  g.surface_level = g.column_height + 0.5 * g.particle_spacing;  // the top of the top row's cells
   g.base_level = 0.0;
 }
 
@@ -227,7 +227,7 @@ InitialConditions read_initial(const TableReader& t, const std::vector<Material>
                                            : InitialStress::FlatSurface;
   if (c.stress == InitialStress::GravityLoading) {
     // Defaults: about a tenth of critical damping of the soil's first mode at a few mm spacing
-    // (docs/scenes.md); settled at a speed of ~1e-4 sqrt(g H) and a stress drift of 1e-5 rho g H
+    // (docs/reference/scenes.md); settled at a speed of ~1e-4 sqrt(g H) and a stress drift of 1e-5 rho g H
     // per step.
     c.gravity_loading.damping = t.number_or("gravity_loading_damping", 0.02, Range::open(0.0, 1.0));
     c.gravity_loading.kinetic_tolerance =
@@ -252,7 +252,7 @@ Numerics read_numerics(const TableReader& t) {
   // the literature uses 2.55 (Bui et al. 2008) to 4 (Gray et al. 2001); 10 bounds the table's error.
   n.artificial_stress_exponent =
       t.number_or("artificial_stress_exponent", 2.55, Range::closed(1.0, 10.0));
-  n.cfl = t.number_or("cfl", 0.5, Range::open_closed(0.0, 2.0));  // measured limit and margin: docs/sph.md
+  n.cfl = t.number_or("cfl", 0.5, Range::open_closed(0.0, 2.0));  // limit and margin: docs/method/sph.md
   n.velocity_gradient_correction = t.boolean_or("velocity_gradient_correction", false);
   n.ghost_body_force = t.boolean_or("ghost_body_force", true);
   return n;

@@ -2,7 +2,7 @@
 /// @file
 /// A collapse scene: geometry, initial state, material, numerics and output, read from a TOML file
 /// with `--set section.key=value` overrides, every value validated (constitutive/parameters.h).
-/// The keys and their meaning are listed in docs/scenes.md.
+/// The keys and their meaning are listed in docs/reference/scenes.md.
 #include <span>
 #include <string>
 #include <vector>
@@ -21,7 +21,7 @@ namespace soilsph::sph {
 enum class WallWithdrawal { Instant, None, Lift };
 
 /// [scene]: geometry and duration. The soil and the walls are the layout (sph/geometry/layout.h,
-/// docs/scenes.md): from [[regions]] and [[boundaries]], or built from the column keys.
+/// docs/reference/scenes.md): from [[regions]] and [[boundaries]], or built from the column keys.
 struct Geometry {
   bool column;              ///< the layout is the column shorthand's (column_width, ... given)
   double column_width;      ///< column: W (m), the soil spans 0 ≤ x ≤ W; regions: the soil's largest x
@@ -54,7 +54,7 @@ struct Geometry {
   }
 };
 
-/// [initial] stress: which free surface the geostatic stress hangs from (docs/scenes.md).
+/// [initial] stress: which free surface the geostatic stress hangs from (docs/reference/scenes.md).
 enum class InitialStress {
   FlatSurface,   ///< "flat-surface": one level surface at the top of the soil's outline (the column's)
   LocalSurface,  ///< "local-surface": the top of the soil on the vertical through each particle

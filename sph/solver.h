@@ -258,7 +258,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = soil; s < all; ++s) prepare(static_cast<std::size_t>(s));
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
-    //    Each particle's own ρ and σ, whatever its material: no interface model (docs/scenes.md).
+    //    Each particle's own ρ and σ, whatever its material: no interface model (docs/reference/scenes.md).
     const bool any_tension = work.any_tension.load(std::memory_order_relaxed);  // after loop 1's barrier
     balanced(work.momentum_balance, 0, p.soil_count, [&](std::size_t i) {
       const Acceleration a = acceleration_of(p, nl, m, i, any_tension);

@@ -17,10 +17,9 @@
 /// faster at its latest try. A try that confirms the current choice doubles the interval to the
 /// next (up to `max_interval` chunks), so on a steady machine the trials cost about 1 % of the run;
 /// a switch resets it, so a change of load is followed within a few chunks. Timing noise can make a
-/// trial look faster than it is: measured, auto lost 11 % against two fixed threads on one idle
-/// run of 6525 particles, and matched them on the others; the 14–16 % losses of a later
-/// single-round bench were the VM's drift between runs, not the tuner (it ran 99 % of the steps on
-/// two threads, and matched them alternated: docs/sph.md, Session 18).
+/// trial look faster than it is, which costs a few chunks on the slower count before the next trial
+/// corrects it; on an idle machine auto matches two fixed threads in alternated runs, and on a busy
+/// one it stays near one thread's time (measurements: docs/performance.md).
 #include <algorithm>
 #include <cstddef>
 

@@ -8,7 +8,7 @@
 /// recomputed from the current pressures at each neighbour search for pressure-dependent MCC.
 /// The paper quotes c = 450–600 m/s, which Table 1 (E = 1 MPa, ν = 0.3, ρ = 2000 kg/m³) does not
 /// give: there c = 25.9 m/s (paper-notes). C_cfl is [numerics] cfl; its default comes from a
-/// measured stability sweep (docs/sph.md, Time step).
+/// measured stability sweep (docs/validation/time-step.md).
 #include <algorithm>
 #include <cmath>
 

@@ -15,7 +15,7 @@
 
 namespace soilsph::verification {
 
-/// Where a test's inputs keep their meaning (README.md, `soilsph point`); run_point_test rejects
+/// Where a test's inputs keep their meaning (docs/guide/material-point-tests.md); run_point_test rejects
 /// anything outside with std::invalid_argument.
 namespace point_limits {
 /// |strain| of a target, a strain-path increment and the strain accumulated along a path, below 1:

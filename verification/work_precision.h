@@ -2,7 +2,7 @@
 /// @file
 /// The work–precision benchmark of the stress integrators: for each model × load path × integrator
 /// × number of increments, the largest error in q and p' against the CVODE reference over the whole
-/// path and the CPU time of one path (median of repeats). See docs/integrators.md.
+/// path and the CPU time of one path (median of repeats). See docs/method/integrators.md.
 #include <functional>
 #include <ostream>
 #include <string>

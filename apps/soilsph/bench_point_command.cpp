@@ -63,7 +63,7 @@ void add_bench_command(CLI::App& app) {
     std::filesystem::create_directories(o->out);
     std::vector<WorkPrecisionRow> rows;
     // The Table 1 soils (MCC with constant E = 1 MPa) from 100 kPa, NC; then the Table 1 clay with
-    // K = (1+e0)p/kappa (21x stiffer at 200 kPa) from 200 kPa, NC and OCR 1.5 (issue #11).
+    // K = (1+e0)p/kappa (21x stiffer at 200 kPa) from 200 kPa, NC and OCR 1.5.
     struct Case {
       std::string label, file;
       bool pressure_dependent;
@@ -84,7 +84,7 @@ void add_bench_command(CLI::App& app) {
           }
         });
       const std::string name = c.label;
-      // The stiff clay is where the driver's path error shows (docs/integrators.md); the Table 1 rows
+      // The stiff clay is where the driver's path error shows (docs/method/integrators.md); the Table 1 rows
       // stay as they were.
       WorkPrecisionOptions case_options = options;
       if (c.pressure_dependent) case_options.path_tolerances = o->path_tolerances;

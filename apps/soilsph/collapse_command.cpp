@@ -2,7 +2,7 @@
 // `soilsph collapse --resume DIR [--set scene.end_time=T]...`: the SPH soil-column collapse (sph/):
 // reads the scene, runs the solver, writes frames, checkpoints, summary.json and a short report.
 // What each file of DIR holds after a normal end, a signal, kill -9, a blow-up and a full disk is in
-// docs/sph-output.md (Run records).
+// docs/reference/output-formats.md.
 #include <omp.h>
 
 #include <algorithm>
@@ -271,7 +271,7 @@ void run_collapse(const CollapseOptions& o) {
     });
     if (unbounded_cam_clay)
       std::cerr << "; for modified-cam-clay soil a [material] minimum_preconsolidation such as 10 Pa, "
-                   "docs/sph.md \"The loosest state\"";
+                   "docs/validation/resolution.md";
     std::cerr << ")\n";
   }
   // A soil that loosens without bound (constitutive/models/loosening.h) jostles or scatters after the

@@ -15,8 +15,8 @@ void add_material_command(CLI::App& app) {
     std::cout << *path << ": " << model_name(material) << ", density " << density(material) << " kg/m^3\n";
     std::visit([](const auto& m) { std::cout << m.describe_constants(); }, material);
     if (const double tau = viscoplastic_relaxation_time(material); tau > 0.0) {
-      // What sets a viscoplastic deposit is the slow-flow viscosity G τ (docs/sph.md, "A material
-      // length for MCC"); pressure-dependent G is given at two pressures.
+      // What sets a viscoplastic deposit is the slow-flow viscosity G τ (docs/validation/resolution.md);
+      // pressure-dependent G is given at two pressures.
       std::visit(
           [&](const auto& m) {
             const Elasticity& e = m.elasticity();

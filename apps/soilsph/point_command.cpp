@@ -139,7 +139,7 @@ std::vector<std::string> provenance(const PointOptions& o, const std::string& ma
                      : o.integrator.empty() ? " (the material's integrator key)" : ""),
       test,
   };
-  // Only when used, so that a run without it writes the same file as before.
+  // Only when used, so that a run without it writes the plain header.
   if (o.path_tolerance > 0.0)
     lines.push_back("driver sub-steps: path_tolerance = " + exact_number(o.path_tolerance) +
                     " (each increment with stress-imposed components split by step doubling until its "
@@ -203,7 +203,7 @@ void run(const PointOptions& o, bool legs_given, bool test_options_given) {
   if (o.test.empty()) {
     parse_toml_file(o.material_path);  // a programme with a syntax error: its file, line and column
     throw ParameterError(o.material_path +
-                         ": no [[leg]] table, so not a programme file (docs/programmes.md); "
+                         ": no [[leg]] table, so not a programme file (docs/reference/programmes.md); "
                          "a material file needs --test");
   }
   const verification::PointTest test = point_test(o, legs_given);
@@ -235,8 +235,8 @@ void add_point_command(CLI::App& app) {
       "Run a material-point test (triaxial, oedometer, isotropic, strain path) or a programme file; write its CSV");
   auto o = std::make_shared<PointOptions>();
   cmd->add_option("FILE", o->material_path,
-                  "a programme file ([initial] and [[leg]] tables, docs/programmes.md), or a TOML file with a "
-                  "[material] table (a scene file works too) run with --test")
+                  "a programme file ([initial] and [[leg]] tables, docs/reference/programmes.md), or a TOML "
+                  "file with a [material] table (a scene file works too) run with --test")
       ->required()
       ->check(CLI::ExistingFile);
   auto* test = cmd->add_option("--test", o->test,

@@ -15,7 +15,7 @@ namespace {
 struct VerifyOptions {
   std::string out = "results/verification";
   std::string cases = SOILSPH_SOURCE_DIR "/verification/cases";
-  std::string python = "/usr/bin/python3";  // Debian's, with matplotlib (README)
+  std::string python = "/usr/bin/python3";  // Debian's, with matplotlib (scripts/setup.sh)
   bool plots = true;
 };
 

@@ -279,7 +279,7 @@ class CamClayReturn {
   /// 1 to 10 cost the same), the other one when the first fails. In the SPH collapse (MCC, 1 mm) the
   /// first start then converges for all but ~100 of 8.4e6 returns and the second for those; with the
   /// flow start alone 4.7 % failed, and the safeguarded solver that took them over made about 35 % of
-  /// all evaluations of the return's equations (docs/integrators.md).
+  /// all evaluations of the return's equations (docs/method/integrators.md).
   std::optional<Point> solve_jointly(double l) const {
     const EntryEstimate first_order = entry_estimate();
     const double l1 = first_order.multiplier;
@@ -492,7 +492,7 @@ State plastic_return(const ModifiedCamClay& model, const State& start, const Cam
   } else {
     // The fallback starts from the larger of the trial's estimate and the entry's (the fast path's
     // start), which for a dust return far outside its surface is orders of magnitude closer: 7× fewer
-    // outer steps over a collapse, with the same root on every return (docs/integrators.md).
+    // outer steps over a collapse, with the same root on every return (docs/method/integrators.md).
     l = std::max(l, eqs.entry_estimate().multiplier);
   }
   double last_step = std::numeric_limits<double>::infinity(), step_before_last = last_step;
@@ -627,8 +627,8 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
   //     both ends). It is the local error of first-order Euler, O(h²) in the sub-increment h, while
   //     the accepted midpoint result errs by O(h³): R ≤ tol accepts it at no extra cost (an
   //     increment that needs no split costs one return, as without control), but R > tol would
-  //     reject sub-increments that are already accurate (the cause of the control's cost, 1.5–3×
-  //     `substep`'s at equal error before this estimate);
+  //     reject sub-increments that are already accurate (alone it made the control 1.5–3× as dear
+  //     as `substep` at equal error), hence the second estimate;
   //  2. when R > tol, step doubling: the same sub-increment as two half returns. With the midpoint's
   //     local error e(h) ≈ C h³, X(h) − X(two halves) = e(h) − 2e(h/2) = ¾ C h³ and the two halves
   //     err by 2 C (h/2)³ = ¼ C h³, so E = ‖X(h) − X(halves)‖ / 3 estimates the error of the halves
@@ -636,7 +636,7 @@ State implicit_update(const ModifiedCamClay& model, const State& start, const Ma
   //     kept is their local extrapolation (`extrapolated`: O(h⁴), back on the surface by the drift
   //     correction) when both the whole and the second half end plastic, as `substep` keeps its
   //     modified-Euler result while its estimate is Euler's: the error per tolerance fell 10–30× on
-  //     the stiff clay's undrained paths (docs/integrators.md, with the cost at equal error).
+  //     the stiff clay's undrained paths (docs/method/integrators.md, with the cost at equal error).
   // The whole rest of the increment is tried first (its elastic part up to the surface exactly, see
   // below). A rejected sub-increment shrinks by the factor that would meet tol, 0.9 (tol/E)^⅓
   // (0.9 √(tol/R) on the Euler branch, R ∝ h²), in [0.1, 0.9]; an accepted one lets the next grow by

@@ -10,7 +10,7 @@
 ///  - the flow of an increment that starts inside the surface is taken from its elastic entry to
 ///    the surface σ_t (found by Newton on the exact elastic path), not from σ_n;
 ///  - a stiffness cap on the entry's weight keeps large softening steps from overshooting (see
-///    CamClayReturn in the .cpp and docs/integrators.md).
+///    CamClayReturn in the .cpp and docs/method/integrators.md).
 /// In every variant:
 ///  - the hardening law is exact in the increment: p_c = p_c,n exp(θ Δε_v^p), θ = (1+e0)/(λ−κ) (eq 27);
 ///  - the volumetric elasticity is integrated exactly: p = P(p_n, Δε_v − Δε_v^p), i.e.
@@ -28,10 +28,10 @@
 /// elastic one (a dust particle at the free surface), from the stress kept at the entry, and kept
 /// when it converges inside v's bracket; in the SPH collapse one of the two starts does for every
 /// return (the first for all but ~1e-5 of them), and the update costs 1.4–1.9× less
-/// (docs/integrators.md).
+/// (docs/method/integrators.md).
 /// Non-convergence throws IntegrationError.
 /// The consistent tangent follows from the implicit-function theorem on (r1, f), including how the
-/// entry σ_t moves with Δε: see docs/integrators.md.
+/// entry σ_t moves with Δε: see docs/method/integrators.md.
 #include "constitutive/models/modified_cam_clay.h"
 #include "constitutive/voigt.h"
 
@@ -59,7 +59,7 @@ State implicit_return(const ModifiedCamClay& model, const State& start, const Ma
 /// exactly, and only the rest is controlled. An increment that needs no split costs one return, as
 /// without control. The tangent is the analytic one of the single return over the whole increment
 /// (exact when the increment is not split, an approximation for the driver's Newton otherwise).
-/// Measured against CVODE and `substep`: docs/integrators.md.
+/// Measured against CVODE and `substep`: docs/method/integrators.md.
 State implicit_update(const ModifiedCamClay& model, const State& start, const Mat3& strain_increment,
                       Mat6* tangent = nullptr);
 

@@ -8,7 +8,7 @@
 /// which puts σ exactly on the cone f = 0. The cone return is admissible while √J2 ≥ 0, i.e.
 /// √J2_tr ≥ G Δλ; otherwise the trial lies past the apex (for ψ = 0 exactly where I1_tr > k_c/α_φ) and
 /// the state returns to the apex I1 = k_c/α_φ, s = 0 (the paper's tension cut-off, eq 30–31).
-/// Derivation and tangent: docs/integrators.md.
+/// Derivation and tangent: docs/method/integrators.md.
 #include "constitutive/models/drucker_prager.h"
 #include "constitutive/voigt.h"
 

@@ -14,7 +14,7 @@
 /// σ1 = σ2 = T on f1 and f2 as each of its four triples of planes; finally the apex
 /// σ1 = σ2 = σ3 = c cotφ (or the cut-off's corner σ_i = T). The first set whose multipliers are ≥ 0,
 /// whose stresses keep their order and lie on or inside every plane is the return: for one active
-/// plane Δγ = f_tr/(a·D·g), as Box 8.5; docs/derivations.md derives the edges and the apex.
+/// plane Δγ = f_tr/(a·D·g), as Box 8.5; docs/method/derivations.md derives the edges and the apex.
 /// The consistent tangent is that of an isotropic tensor function of σ_tr (de Souza Neto et al.
 /// Appendix A): the principal Jacobian I − D G_J A_J⁻¹ N_Jᵀ plus the spin of the eigenvectors,
 /// (σ_i − σ_j)/(σ_tr,i − σ_tr,j) on the shear components, times D.

@@ -23,8 +23,8 @@
 /// needed at the D-P apex, where the error does not fall with the step); a model without one throws
 /// IntegrationError. No path returns a NaN.
 /// A model with a tension cut-off (`beyond_tension_cutoff(trial)`, the D-P apex) returns its
-/// `correct()` state when the elastic trial lies past the cut-off: see docs/integrators.md for why that
-/// is exact for D-P with ψ = 0 and why no explicit substep can resolve the apex kink anyway.
+/// `correct()` state when the elastic trial lies past the cut-off: see docs/method/integrators.md for
+/// why that is exact for D-P with ψ = 0 and why no explicit substep can resolve the apex kink anyway.
 #include <cmath>
 #include <limits>
 #include <string>

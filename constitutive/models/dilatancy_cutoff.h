@@ -9,7 +9,7 @@
 /// Why: a constant ψ dilates without bound. A collapse shears its soil to plastic strains of order 1,
 /// and with ψ = 5°, 10°, 15° the paper's D-P column grew by 31, 50 and 65 % in volume, its toe at a quarter
 /// to a half of the initial density still jostling at 0.1–0.3 m/s after the rest of the deposit had stopped
-/// (docs/sph.md, "Dilatant soil"); a real sand stops dilating at its critical state.
+/// (docs/validation/collapse.md); a real sand stops dilating at its critical state.
 ///
 /// The model past its cut-off is a twin built with ψ = 0, so that every integrator and the CVODE
 /// reference use its constants as they are, with no branch inside a return.

@@ -37,7 +37,7 @@ DruckerPrager::DruckerPrager(const Params& params)
   const double root = std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);  // eq 19
   alpha_phi_ = tan_phi / root;
   k_c_ = 3.0 * params.cohesion / root;
-  // The potential's slope, chosen once here so that the update reads one number (docs/derivations.md).
+  // The potential's slope, chosen once here so that the update reads one number (docs/method/derivations.md).
   const double psi = params.dilatancy_angle * kDegree;
   if (params.plastic_potential == PlasticPotential::PaperEq20) {
     alpha_psi_ = 3.0 * std::sin(psi);  // eq 20 as printed

@@ -3,7 +3,7 @@
 /// Drucker–Prager elastic–perfectly-plastic model with non-associated flow (paper §3.2.2).
 ///   yield      f = √J2 + α_φ I1 − k_c                                      (eq 17)
 ///   constants  α_φ = tanφ / √(9 + 12 tan²φ),  k_c = 3c / √(9 + 12 tan²φ)   (eq 19, plane-strain fit)
-///   potential  g = √J2 + α_ψ I1, α_ψ chosen by `plastic_potential` (docs/derivations.md):
+///   potential  g = √J2 + α_ψ I1, α_ψ chosen by `plastic_potential` (docs/method/derivations.md):
 ///              "matched" (default)  α_ψ = tanψ / √(9 + 12 tan²ψ), ψ matched to Mohr–Coulomb as φ is
 ///              "paper-eq20"         α_ψ = 3 sinψ, the potential as printed (eq 20)
 /// Stresses are tension-positive, so I1 < 0 in compression and the cone's apex is at I1 = k_c/α_φ;
@@ -35,7 +35,7 @@ std::string_view plastic_potential_name(PlasticPotential potential);
 /// with the required keys given (the model's constructor checks every range).
 struct DruckerPragerParams : FrictionalParams {
   /// Input default: the closed-form return is the cheapest update (48 ns) and as accurate as any
-  /// scheme on the work-precision paths (docs/integrators.md).
+  /// scheme on the work-precision paths (docs/method/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
   PlasticPotential plastic_potential = PlasticPotential::Matched;  ///< how α_ψ follows from ψ
   Integrator integrator = kDefaultIntegrator;

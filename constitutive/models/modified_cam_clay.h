@@ -25,7 +25,7 @@ namespace soilsph {
 struct ModifiedCamClayParams {
   /// Input default: the second-order implicit return reaches an error ≤ 1e-4 cheapest on the drained
   /// and oedometer work-precision paths, 3-9× cheaper than `substep` at its default tolerance, with a
-  /// cost per update that does not grow with the increment (docs/integrators.md).
+  /// cost per update that does not grow with the increment (docs/method/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
   static constexpr double kDefaultImplicitAlpha = 0.5;
   double density = 0.0;               ///< kg/m³ (required)
@@ -84,8 +84,8 @@ class ModifiedCamClay {
   /// perfectly plastic. Without the bound a free-surface particle softens to p_c ~ 1e-11 Pa ("dust")
   /// and must then compact by a plastic volume ln(p/p_c)/θ ≈ 1 before it carries 100 Pa again: in the SPH
   /// collapse of a soft overconsolidated column such grains fell onto the toe, were compressed to
-  /// 1.6–1.9× their density and pushed into the floor; a bound of 10 Pa keeps them out (docs/sph.md,
-  /// "The loosest state").
+  /// 1.6–1.9× their density and pushed into the floor; a bound of 10 Pa keeps them out
+  /// (docs/validation/resolution.md).
   double hardening_exponent_at(double pc, double compaction) const {
     return compaction < 0.0 && pc <= params_.minimum_preconsolidation ? 0.0 : theta_;
   }

@@ -7,7 +7,7 @@
 ///   cut-off    f_t = σ1 − T (Rankine, associated), T = `tension_cutoff` (none by default)
 /// In compression-positive principal stresses σ'_1 = −σ3 ≥ σ'_3 = −σ1 the yield condition reads
 /// σ'_1 − σ'_3 = (σ'_1 + σ'_3) sinφ + 2c cosφ, Coulomb's τ = c + σ' tanφ on the plane of failure
-/// (docs/derivations.md, "Mohr–Coulomb"). Without a cut-off the pyramid's apex is the isotropic
+/// (docs/method/derivations.md). Without a cut-off the pyramid's apex is the isotropic
 /// tension σ1 = σ2 = σ3 = c cotφ. The implicit return works in principal stresses with the main
 /// plane, the two edges and the apex (integrators/implicit_mohr_coulomb.h).
 #include <array>
@@ -28,7 +28,7 @@ namespace soilsph {
 /// The parameters, with the defaults of an input file (the constructor checks every range).
 struct MohrCoulombParams : FrictionalParams {
   /// Input default: the principal-stress return is exact for this piecewise-linear model while the
-  /// flowing planes do not change inside an increment (docs/integrators.md).
+  /// flowing planes do not change inside an increment (docs/method/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
   static constexpr double kNoTensionCutoff = std::numeric_limits<double>::infinity();
   double tension_cutoff = kNoTensionCutoff;  ///< T, Pa, the largest principal stress; ∞: none (the apex)
@@ -89,7 +89,7 @@ class MohrCoulomb : public PerfectPlasticity, public DilatancyCutoff<MohrCoulomb
   /// ∂f/∂σ of the active function: for Mohr–Coulomb Σ a_i e_i⊗e_i with a = (1+sinφ, 0, −(1−sinφ));
   /// at an edge (two equal principal stresses) the coefficients of the equal ones are averaged,
   /// the mean of the two planes' gradients: a subgradient that does not depend on which
-  /// eigenvectors the decomposition picks in the repeated eigenspace (docs/derivations.md).
+  /// eigenvectors the decomposition picks in the repeated eigenspace (docs/method/derivations.md).
   Mat3 yield_gradient(const Mat3& sigma, double /*pc*/ = 0.0) const;
   /// ∂g/∂σ, as yield_gradient with ψ for φ (the cut-off's flow is associated).
   Mat3 flow_direction(const Mat3& sigma, double /*pc*/ = 0.0) const;

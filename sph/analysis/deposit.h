@@ -3,7 +3,7 @@
 /// Shape of the final deposit of a column collapse: runout, height and repose angle.
 ///
 /// Geometry (the agreed scene): the fixed wall is at x = W on the right, the soil flows towards −x
-/// on the floor y = 0. Definitions (docs/sph-output.md, with the reasons):
+/// on the floor y = 0. Definitions (docs/reference/output-formats.md, with the reasons):
 /// - The deposit is the largest cluster of particles linked by distances ≤ 2·spacing; isolated
 ///   splashed particles or small groups farther than that from the main body are ignored.
 /// - runout_m = W − (smallest x of the deposit): the L∞ of Lube et al. (2005) measured from the
@@ -19,7 +19,7 @@
 ///   (the floor surface lies half a spacing below the first row, the free surface half a spacing
 ///   above the top particle). Unlike runout_m it ignores a toe thinner than t, whose length depends
 ///   on the resolution (a layer one or two particles thick); the collapse takes t = H0/10, which
-///   every shipped resolution resolves with at least two particles (docs/sph.md, Resolution).
+///   every shipped resolution resolves with at least two particles (docs/validation/resolution.md).
 #include <span>
 
 #include "sph/geometry/vec2.h"
@@ -37,8 +37,8 @@ inline constexpr double deposit_link_spacings = 2.0;
 /// Height band of the surface points the repose angle is fitted on, as fractions of the height.
 inline constexpr double repose_band_low = 0.1, repose_band_high = 0.9;
 
-/// Where a scene's deposit is measured from ([deposit], docs/scenes.md): runout grows along the unit
-/// `direction` from `origin`, height along `up` (the unit normal of `direction` against gravity) above
+/// Where a scene's deposit is measured from ([deposit], docs/reference/scenes.md): runout grows along
+/// the unit `direction` from `origin`, height along `up` (the unit normal of `direction` against gravity) above
 /// the origin, and the repose angle is the surface's slope in that frame. The column's frame is
 /// origin (W, 0), direction (−1, 0), up (0, 1): the definitions above, to the bit.
 struct DepositFrame {

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Gauges: points of a scene where p, q, velocity and displacement are sampled over time
-/// ([[gauges]], docs/scenes.md; written to gauges.csv, docs/sph-output.md).
+/// ([[gauges]], docs/reference/scenes.md; written to gauges.csv, docs/reference/output-formats.md).
 /// - A "particle" gauge is a material point: the soil particle nearest its position at t = 0, which
 ///   it follows (its displacement is that particle's).
 /// - A "point" gauge stays where it is put: the Shepard-normalised kernel average over the soil

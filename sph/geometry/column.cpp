@@ -20,7 +20,8 @@ Layout column_layout(const ColumnKeys& c, const std::string& material) {
                             "[scene] column",
                             {}});
   // The strips are given, not derived from the surfaces, so that each ghost is computed by the same
-  // operations as before the layout existed (bit-identical runs): the floor's rows from under the
+  // operations in the same order as the shipped column runs were validated with (bit-identical
+  // frames, tests/sph/test_geometry.cpp): the floor's rows from under the
   // fixed wall's last layer (x = W + layers Δp) leftwards, the walls' rows upwards from y = 0.
   Wall floor{{{W - c.floor_length - half, -half}, {W + half, -half}}, WallKind::NoSlip, 0.0, {}, "[scene] floor", {}, "floor"};
   floor.strips = {{{W + c.layers * dx, 0.0}, {-1.0, 0.0}, {0.0, -1.0}, lattice_count(c.floor_length, dx) + c.layers}};

@@ -3,7 +3,8 @@
 /// The column shorthand: the [scene] keys column_width, column_height, floor_length,
 /// wall_withdrawal and boundary_layers describe the paper's column, which this builds as a layout
 /// (one box region, a no-slip floor, a free-slip fixed wall on the right and a free-slip removable
-/// wall on the left), placing every particle exactly where the column always had it.
+/// wall on the left), placing particle centres on the edges of W × H as the paper does (so the block
+/// grows with the spacing: docs/validation/resolution.md).
 #include "sph/geometry/layout.h"
 
 namespace soilsph::sph {

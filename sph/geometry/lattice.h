@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Particles from a layout: the soil lattice fitted into the regions and the ghost rows behind the
-/// walls (docs/scenes.md, "Lattice").
+/// walls (docs/reference/scenes.md).
 #include <string>
 #include <vector>
 

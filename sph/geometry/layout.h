@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// A scene's geometry as data (docs/scenes.md): soil regions (boxes and polygons, each naming its
+/// A scene's geometry as data (docs/reference/scenes.md): soil regions (boxes and polygons, each naming its
 /// material) and boundaries (straight walls and polylines, each with a kind and an optional motion),
 /// on one particle lattice. The column keys of [scene] build one (geometry/column.h); the
 /// [[regions]] and [[boundaries]] tables build any other (geometry/read_layout.h). The lattice
@@ -14,7 +14,7 @@
 
 namespace soilsph::sph {
 
-/// A soil region: filled with the lattice nodes that lie inside its outline (docs/scenes.md).
+/// A soil region: filled with the lattice nodes that lie inside its outline (docs/reference/scenes.md).
 struct Region {
   enum class Shape { Box, Polygon, Particles };
   Shape shape = Shape::Box;

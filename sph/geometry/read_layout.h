@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// Reads [[regions]] and [[boundaries]] (docs/scenes.md): every key validated, each error naming the
-/// file, the table (e.g. "[[boundaries]] #2") and the key.
+/// Reads [[regions]] and [[boundaries]] (docs/reference/scenes.md): every key validated, each error
+/// naming the file, the table (e.g. "[[boundaries]] #2") and the key.
 #include <string>
 #include <utility>
 #include <vector>

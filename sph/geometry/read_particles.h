@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Soil particles imported from a CSV file (a `[[regions]]` entry with shape = "particles",
-/// docs/scenes.md): shapes made elsewhere, at positions that need not lie on the scene's lattice.
+/// docs/reference/scenes.md): shapes made elsewhere, at positions that need not lie on the scene's lattice.
 #include <string>
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The free surface of the soil seen from a point: how high the soil reaches on the vertical through
-/// it (along −g), for the geostatic stress under a surface that is not flat (issue #12 item 3).
+/// it (along −g), for the geostatic stress under a surface that is not flat.
 #include <span>
 
 #include "sph/geometry/layout.h"

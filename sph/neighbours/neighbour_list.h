@@ -13,7 +13,7 @@
 /// (particle) at a time, so that the solver can fuse that pass with the work on the same particle.
 /// A row has as many pair slots as candidate slots, so filling it never overflows. Stored rather
 /// than evaluated again in each of the passes that read them: measured 15 % faster per step
-/// (docs/sph.md, Performance).
+/// (docs/notes/performance-log.md).
 ///
 /// Threading: search() and build() use orphaned OpenMP work-sharing, so they are called by every
 /// thread of an enclosing parallel region (the solver's one region per run) or, outside any region,

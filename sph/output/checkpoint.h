@@ -3,7 +3,7 @@
 /// DIR/checkpoint.h5: everything a collapse needs to continue bit for bit (`soilsph collapse
 /// --resume DIR`): every particle array, every soil state (stress, p_c, plastic strains), the loop
 /// state (time, steps, Δt_{n−1}, c, the rest watch, the neighbour search's positions, the counts)
-/// and the scene as run. The layout is in docs/sph-output.md.
+/// and the scene as run. The layout is in docs/reference/output-formats.md.
 #include <filesystem>
 #include <string>
 

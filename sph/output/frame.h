@@ -2,8 +2,8 @@
 /// @file
 /// A read-only view of the soil particles at one instant: what the solver hands to the writers.
 ///
-/// Conventions (see docs/sph-output.md): SI units; 2D plane strain in x (horizontal) and y (vertical,
-/// up); stress components tension-positive as inside the solver (paper eq 9–10); p and q
+/// Conventions (see docs/reference/output-formats.md): SI units; 2D plane strain in x (horizontal)
+/// and y (vertical, up); stress components tension-positive as inside the solver (paper eq 9–10); p and q
 /// compression-positive soil-mechanics invariants (constitutive/tensor.h).
 #include <array>
 #include <cstdint>

@@ -3,7 +3,7 @@
 /// Frames of an SPH run written while it runs: DIR/frames/frame_NNNNNN.h5 (one HDF5 file per frame),
 /// DIR/frames.h5 (an HDF5 index whose group /frame_NNNNNN is an external link to that file, so that
 /// readers see one file of frames) and DIR/frames.xdmf (the XDMF index ParaView opens as a time
-/// series of particle clouds). The layout is described in docs/sph-output.md.
+/// series of particle clouds). The layout is described in docs/reference/output-formats.md.
 #include <cstddef>
 #include <filesystem>
 #include <vector>

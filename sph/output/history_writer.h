@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The run's time histories (docs/sph-output.md): DIR/boundary_forces.csv, the force the soil
+/// The run's time histories (docs/reference/output-formats.md): DIR/boundary_forces.csv, the force the soil
 /// exerts on each boundary, and DIR/gauges.csv, what each gauge reads; one row per boundary (per
 /// gauge) per sample, in long form (`pandas.read_csv(f, comment="#")` reads them). Rows are
 /// flushed as they are written; a resumed run keeps the rows before its checkpoint's time.

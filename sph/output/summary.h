@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// summary.json: the figures of one SPH run. The field names are a contract with the scripts and
-/// the README (docs/sph-output.md lists them with their units).
+/// the documentation (docs/reference/output-formats.md lists them with their units).
 #include <cstddef>
 #include <filesystem>
 #include <string>

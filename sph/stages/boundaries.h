@@ -20,8 +20,8 @@
 ///    average of the soil velocity v^n, taken with the stress). While the soil slips along the wall
 ///    (|Δv_t| > kStickSlip) it slides with kinetic friction against the slip: τ = μ σ'_n sign(Δv_t),
 ///    the tangential velocity copied as on a free-slip wall (s = 0), whatever shear the soil has
-///    built (a sliding soil barely builds any, so reading the friction from σ̄_nt, as before,
-///    transmitted only about a quarter of μσ'_n). At (nearly) no slip it sticks as no slip
+///    built (a sliding soil barely builds any, so a friction read from σ̄_nt would transmit only
+///    about a quarter of μσ'_n). At (nearly) no slip it sticks as no slip
 ///    (τ = σ̄_nt, s = 1) while the demanded shear is within the limit (|σ̄_nt| < μ σ'_n), and starts
 ///    to slide, τ = ±μ σ'_n with the sign of σ̄_nt, beyond it. A wall in tension (σ̄_nn ≥ 0) holds
 ///    no shear.
@@ -33,10 +33,10 @@
 ///    sign of Δv_t (as in the no-slip case: soil moving along +t over a stuck wall has
 ///    ∂v_t/∂n > 0, so σ_nt = 2G ε_nt > 0, which brakes it). Measured (block_on_incline, 1 mm,
 ///    0.05 s): the block with δ = 15° on the 30° incline reached 0.078 m/s down the
-///    slope (free slip 0.211, Coulomb g(sin θ − tan δ cos θ) t = 0.131; the former switch, reading
-///    σ̄_nt, 0.178): friction took 0.133 m/s off the free-slip block, 1.17 of Coulomb's μ g cos θ t
-///    (1.12 without the ghosts' weight below; a flat wall with gravity tilted by 30°, then: 1.20),
-///    so the wall transmits slightly more than μσ'_n; why is open (docs/scenes.md, Limits). δ = 45°
+///    slope (free slip 0.211, Coulomb g(sin θ − tan δ cos θ) t = 0.131; a switch reading σ̄_nt:
+///    0.178): friction took 0.133 m/s off the free-slip block, 1.17 of Coulomb's μ g cos θ t
+///    (1.12 without the ghosts' weight below; a flat wall with gravity tilted by 30°: 1.20),
+///    so the wall transmits slightly more than μσ'_n; why is open (docs/reference/scenes.md). δ = 45°
 ///    still holds it.
 /// The soil's weight continues across the wall ([numerics] ghost_body_force, default on): each soil
 /// neighbour's normal stress is carried to the ghost along n by the normal equilibrium
@@ -48,7 +48,7 @@
 /// its own depth; without it the ghost has the soil's average, 3 % less compression at 2 mm, and
 /// the bottom row starts falling at 0.51 g (tests/sph/test_boundaries.cpp). Δ leaves σ_nt, hence
 /// the friction, unchanged. The wall guard of soil flowing over a floor at h/Δp = 3.2 halves with it
-/// (docs/sph.md), the shipped scenes never need the guard either way.
+/// (docs/method/sph.md), the shipped scenes never need the guard either way.
 /// The stick flag s is decided with the stress (loop 1 of the step) and used for the velocity (loop 3).
 /// For axis-aligned walls with v_w = 0 these are the column's former formulas, operation for
 /// operation: (σxx, σyy, −σxy) and (−v̄x, v̄y) on a vertical free-slip wall, σ̄ and −v̄ on the no-slip

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The input fuzzer of issue #10 item 8: mutants of the shipped inputs (TOML materials, the strain-path
+/// The input fuzzer: mutants of the shipped inputs (TOML materials, the strain-path
 /// CSV, a small collapse scene) and of the command line, each run through the `soilsph` executable in a
 /// child process with a time limit, and the contract checked from outside:
 /// - the process ends by itself (no signal, no hang) with exit status 0, 1 or 2;
@@ -9,7 +9,7 @@
 /// - an exit 0 has sane results (finite numbers, the rows asked for, the test's imposed conditions,
 ///   a summary.json that reached the end time without the wall guard acting unreported).
 /// Every case is a pure function of (seed, index), so a failure is reproduced by its index alone.
-/// docs/fuzzing.md describes the mutations, the outcome classes and how to run it.
+/// docs/method/fuzzing.md describes the mutations, the outcome classes and how to run it.
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -118,7 +118,7 @@ Outcome run_child(const std::string& executable, const std::vector<std::string>&
 
 /// One broken promise found in a case.
 struct Finding {
-  std::string category;  ///< a fixed name (docs/fuzzing.md lists them)
+  std::string category;  ///< a fixed name (docs/method/fuzzing.md lists them)
   std::string detail;
 };
 
@@ -143,7 +143,7 @@ struct Config {
   bool keep_all = false;  ///< keep every case folder, not only the failing ones
   bool verbose = false;   ///< print every case
   Limits limits;
-  /// The environment's SOILSPH_FUZZ_* settings over the defaults (docs/fuzzing.md).
+  /// The environment's SOILSPH_FUZZ_* settings over the defaults (docs/method/fuzzing.md).
   static Config from_environment(std::string executable, std::string source_dir, fs::path default_work_dir);
 };
 

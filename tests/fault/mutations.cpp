@@ -288,7 +288,7 @@ std::vector<Spec> make_specs() {
                {"0.0", "90.0", "89.9999", "1e-9", "-1e-9", "90.0000001", "25.0", "30.0", "1.0", "0.9999999"},
                {"dilatancy_angle", "lateral_stress_ratio"},
                {},
-               [](const toml::table& d) {  // MCC: M vanishes below 1 degree (README, Materials)
+               [](const toml::table& d) {  // MCC: M vanishes below 1 degree (docs/reference/materials.md)
                  return string_at(d, "material", "model", "") == "modified-cam-clay" ? closed_open(1, 90)
                                                                                     : open(0, 90);
                }});
@@ -381,7 +381,7 @@ std::vector<Spec> make_specs() {
                {},
                {},
                fixed(Interval{1e-12, 1e-2, false, false, true})});
-  // [scene] (sph/scene.cpp, docs/sph.md)
+  // [scene] (sph/scene.cpp, docs/method/sph.md)
   s.push_back({"scene",
                "column_width",
                Type::Number,
@@ -429,7 +429,7 @@ std::vector<Spec> make_specs() {
   {
     Spec gravity{"scene", "gravity", Type::Number, true, {"-1e-9", "0", "1e4", "1e308", "1e30", "[1e4, 1.0]"},
                  {},      {},        non_negative};
-    gravity.vector_magnitude = 1e4;  // docs/scenes.md: g, or [gx, gy] pointing anywhere
+    gravity.vector_magnitude = 1e4;  // docs/reference/scenes.md: g, or [gx, gy] pointing anywhere
     s.push_back(gravity);
   }
   s.push_back({"scene",
@@ -1646,7 +1646,7 @@ Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
       c.args.push_back(rng.pick(kIntegrators));
     }
     c.strain_rows = count_strain_rows(text);
-    // Whatever the exit, a failure on a strain path must say which file (issue #10 item 6).
+    // Whatever the exit, a failure on a strain path must say which file.
     c.names_if_failed = {{"the strain-path file", {"strain-path.csv"}}};
     if (count == 1) {
       c.expect = single.expect;
@@ -1655,8 +1655,8 @@ Case make_case(const Inputs& in, std::uint64_t seed, std::uint64_t index) {
         c.names_if_input.push_back({"the file and line", {"strain-path.csv:" + std::to_string(single.line)}});
     }
   } else if (kind < 58 && !in.programmes.empty()) {
-    // A shipped programme file mutated like the other TOML inputs (docs/programmes.md), run as it is or
-    // with another integrator; its output is checked for shape and finite values only.
+    // A shipped programme file mutated like the other TOML inputs (docs/reference/programmes.md), run as it
+    // is or with another integrator; its output is checked for shape and finite values only.
     c.kind = "programme";
     c.command = "point";
     const auto& [name, text] = in.programmes[rng.below(in.programmes.size())];

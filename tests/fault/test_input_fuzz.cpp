@@ -1,4 +1,4 @@
-// The input fuzzer of issue #10 item 8 (docs/fuzzing.md): the harness's own checks, then the fuzz run.
+// The input fuzzer (docs/method/fuzzing.md): the harness's own checks, then the fuzz run.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -231,7 +231,7 @@ TEST_CASE("a full disk ends the run with one line, and the frames written before
 
 TEST_CASE("a blow-up stops the run, naming the particle, quantity, step and time", "[fault][blow-up]") {
   const fs::path dir = fresh("blow-up");
-  // Twice the CFL number at which the scheme is still stable (docs/sph.md, Time step).
+  // Twice the CFL number at which the scheme is still stable (docs/validation/time-step.md).
   const auto r = run_child(collapse(dir, {"--set", "numerics.cfl=2.0"}), dir / "log.txt");
   INFO(r.log);
   CHECK(r.exit_status == 1);

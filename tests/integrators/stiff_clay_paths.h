@@ -1,5 +1,5 @@
 #pragma once
-// The triaxial paths of issue #11 item 4 (to ε_a = 0.1 from p0 = 200 kPa, one leg) and their error
+// The stiff clay's triaxial paths (to ε_a = 0.1 from p0 = 200 kPa, one leg) and their error
 // against the CVODE reference, shared by the MCC accuracy tests.
 #include <catch2/catch.hpp>
 

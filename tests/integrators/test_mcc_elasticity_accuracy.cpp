@@ -1,6 +1,6 @@
 // MCC `implicit` against the CVODE reference on drained and undrained triaxial paths to ε_a = 0.1,
 // for both elasticities (constant E of Table 1; K = (1+e0)p/κ) and OCR 1 and 1.5 from p0 = 200 kPa:
-// the target of issue #11 item 4 is a relative error ≤ 1e-3 (verification/report/curve_errors) with
+// our goal is a relative error ≤ 1e-3 (verification/report/curve_errors) with
 // 20 increments in all eight cases.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -29,7 +29,7 @@ ModifiedCamClay table1(Elasticity::Kind kind, double implicit_tolerance) {
 TEST_CASE(
     "MCC implicit with implicit_tolerance = 1e-3: undrained triaxial within 1e-3 of CVODE in 20 increments",
     "[integrators][cvode]") {
-  // The target of issue #11 item 4. The expectation is CVODE's curve; the bound is the target.
+  // Our goal: ≤ 1e-3 in 20 increments. The expectation is CVODE's curve; the bound is that goal.
   // implicit_tolerance bounds the step-doubling estimate of each doubled sub-increment's error, and
   // the result kept is the doubling's local extrapolation (O(h⁴) where the estimate is O(h³)), so the
   // path errs well below the tolerance: 1e-3 gives 1.2e-4 (OCR 1) and 4.4e-4 (OCR 1.5) on the stiff
@@ -57,7 +57,7 @@ TEST_CASE("MCC implicit with implicit_tolerance = 1e-3, drained triaxial: consta
     // The drained driver imposes a straight strain path inside each increment and holds σ_r only at
     // its end; CVODE holds σ_r throughout. For the stiff clay that path difference is 2.5e-3 (OCR 1)
     // and 1.6e-3 (OCR 1.5) at 20 increments, whatever the integrator: substep at tolerance 1e-8 errs
-    // by the same. The target (1e-3) is not met here without the driver's sub-steps
+    // by the same. Our goal (1e-3) is not met here without the driver's sub-steps
     // (test_mcc_path_substeps.cpp); the controlled implicit at 1e-4 is within 10 % of the near-exact
     // integration of the driver's path.
     auto accurate = test::table1_cam_clay_params(Elasticity::Kind::PressureDependent);

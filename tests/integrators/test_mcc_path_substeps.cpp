@@ -15,7 +15,7 @@ using soilsph::test::error_vs_cvode;
 using soilsph::test::triaxial;
 
 namespace {
-constexpr double kTarget = 1e-3;  // the issue's target, relative (curve_errors)
+constexpr double kTarget = 1e-3;  // our goal, relative (curve_errors)
 
 Material clay(Elasticity::Kind kind, Integrator integrator, double implicit_tolerance, double substep_tolerance = 1e-6) {
   auto params = test::table1_cam_clay_params(kind);
@@ -35,7 +35,7 @@ TEST_CASE("MCC drained, K ∝ p, 20 increments: the driver's path error exceeds 
   for (double ocr : {1.0, 1.5}) {
     INFO("OCR " << ocr);
     CHECK(error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, ocr, 20, 0.0), "substep") > kTarget);
-    // With the sub-steps the same integration meets the target: the error was the path's.
+    // With the sub-steps the same integration meets our goal: the error was the path's.
     CHECK(error_vs_cvode(accurate, triaxial(LoadPath::TriaxialDrained, ocr, 20, 1e-5), "substep") <= kTarget);
   }
 }

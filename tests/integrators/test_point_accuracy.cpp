@@ -1,5 +1,5 @@
 // `substep` and `implicit` through the material-point driver against the CVODE reference: the
-// accuracy the work-precision benchmark reports (docs/integrators.md), kept as regression bounds.
+// accuracy the work-precision benchmark reports (docs/method/integrators.md), kept as regression bounds.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -50,7 +50,7 @@ TEST_CASE("MCC: substep meets its tolerance in few increments, implicit converge
     // also carries the driver's straight-strain-path difference to CVODE, O(Δε²) (6.5e-6 at 10).
     const double substep = error(mcc, "substep", 20);
     CHECK(substep <= 5e-6);
-    // implicit, generalised midpoint α = ½ (the default): the issue's target is ≤ 1e-3 with 20
+    // implicit, generalised midpoint α = ½ (the default): our goal is ≤ 1e-3 with 20
     // increments to ε_a = 0.1; second order, so the error quarters when the increments double.
     const double midpoint_20 = error(mcc, "implicit", 20), midpoint_40 = error(mcc, "implicit", 40);
     // α = 1 (backward Euler): first order, the error halves.

@@ -45,7 +45,7 @@ void check_column_at_rest(const char* name) {
 
 /// The wall withdrawn, at 2 mm: the run stays finite, the soil stays inside the walls and comes to
 /// rest before the shipped end time (1 s), and the deposit lies within broad bands around the
-/// scaling laws for a = H0/L0 = 1.5 (the issue): L∞ between 0.8 × Lube et al. (11.2 cm) and
+/// scaling laws for a = H0/L0 = 1.5: L∞ between 0.8 × Lube et al. (11.2 cm) and
 /// 1.2 × Lajeunesse et al. (14.8 cm), H∞ within 25 % of 4.7 cm, repose angle below φ = 35°.
 void check_collapse(const char* name) {
   const Scene scene = test::shipped_scene(name, {"scene.particle_spacing=0.002"});
@@ -108,9 +108,9 @@ DepositMetrics viscous_mcc_deposit(double spacing) {
 
 // A softening soil with a material length has a deposit that does not depend on the particles once
 // they resolve that length (the rate-independent MCC's does: its shear bands are as thin as the
-// spacing; docs/sph.md, Resolution). With G tau = 45 Pa s the paper's MCC column converges from 4 mm
-// on (docs/sph.md, "A material length for MCC"): the runouts and the repose angle of the 4 and 2 mm
-// runs within issue #9's targets (2 %, 1 deg); the height within 3 % (2.8 % measured: at 4 mm the
+// spacing; docs/validation/resolution.md). With G tau = 45 Pa s the paper's MCC column converges from 4 mm
+// on (docs/validation/resolution.md): the runouts and the repose angle of the 4 and 2 mm
+// runs within our goals (2 %, 1 deg); the height within 3 % (2.8 % measured: at 4 mm the
 // column is 11 particles wide). Rate-independent, the same two runs differ by 2.6 deg in the angle
 // and 4.9 % in the tip.
 TEST_CASE("a viscous MCC column's deposit converges from 4 to 2 mm", "[column][collapse]") {

@@ -56,7 +56,7 @@ TEST_CASE("gravity loading: a box between walls settles at rho g depth and at re
   // Mid-depth, away from the walls: the rows at y = 0.018 and 0.022 (depths 0.022 and 0.018 below the
   // top 0.04). Their mean σyy within 3 % of −ρ g × 0.02. The mean of two rows, not each: the relaxed
   // SPH stress carries a row-to-row (odd-even) oscillation that the momentum equation does not see
-  // (measured ±24 % at 4 mm; docs/scenes.md, Gravity loading).
+  // (measured ±24 % at 4 mm; docs/reference/scenes.md).
   const double rho_g = 2000.0 * 9.81;
   double sum = 0.0;
   int checked = 0;

@@ -1,4 +1,4 @@
-// The geostatic stress under the local free surface (issue #12 item 3): the same as the flat surface
+// The geostatic stress under the local free surface: the same as the flat surface
 // for a box, the depth below the slope face for a polygon, the highest soil under an overhang.
 #include <catch2/catch.hpp>
 

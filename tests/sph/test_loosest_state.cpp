@@ -1,5 +1,5 @@
-// MCC's softening bound in the SPH collapse (`minimum_preconsolidation`, docs/sph.md "The loosest
-// state"): an overconsolidated column with the soft pressure-dependent elasticity sheds grains from
+// MCC's softening bound in the SPH collapse (`minimum_preconsolidation`, docs/validation/resolution.md):
+// an overconsolidated column with the soft pressure-dependent elasticity sheds grains from
 // its dry-side top. Without the bound they soften to "dust" (p_c → 1e-11 Pa), fall onto the toe and
 // are compacted there to 1.5× their density and into the floor; with a bound of 10 Pa (the value the
 // collapse's warning suggests) they need at most ln(p/10 Pa)/θ of compaction to carry p again.

@@ -1,4 +1,4 @@
-// Several materials in one scene (issue #12): the soil grouped by material, each particle's own
+// Several materials in one scene: the soil grouped by material, each particle's own
 // density in the geostatic state, and runs that the grouping does not change.
 #include <catch2/catch.hpp>
 

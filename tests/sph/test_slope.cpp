@@ -1,4 +1,4 @@
-// The slope of data/scenes/slope.toml (issue #12 item 5) by strength reduction at a coarse spacing:
+// The slope of data/scenes/slope.toml by strength reduction at a coarse spacing:
 // with its full strength it stands, with c and tan(phi) divided by twice its limit-equilibrium factor
 // of safety it fails. FoS_Bishop = 1.53 (scripts/slope_bishop.py, checked in ctest slope_bishop.check).
 #include <catch2/catch.hpp>

@@ -170,6 +170,6 @@ TEST_CASE("stop at rest: a collapse stops at rest before its end time, final fra
       std::get<DruckerPrager>(scene.material), setup, p, [&](const Particles&, double t) { last_frame = t; },
       [](double, std::size_t) {});
   CHECK(stats.stopped_at_rest);
-  CHECK(stats.end_time < 0.6);  // the collapse is over by 0.4–0.5 s (docs/sph.md)
+  CHECK(stats.end_time < 0.6);  // the collapse is over by 0.4–0.5 s (docs/method/sph.md)
   CHECK(last_frame == stats.end_time);
 }

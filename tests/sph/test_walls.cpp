@@ -193,7 +193,7 @@ TEST_CASE("a block on an inclined free-slip wall slides down it and is held norm
   // Without friction only gravity acts along the wall: v = −g sin θ t = −0.245 m/s after t = 0.05 s.
   // A block cut from the axis-aligned lattice has a staircase base that rides over the wall's ghost
   // rows: it measured 0.85 of that (a flat base on a flat wall with gravity tilted by 30°: 1.03;
-  // docs/scenes.md, Walls), so the band is 0.75 to 1.05.
+  // docs/reference/scenes.md), so the band is 0.75 to 1.05.
   const double expected = -9.81 * 0.5 * 0.05;
   CHECK(m.along < 0.75 * expected);
   CHECK(m.along > 1.05 * expected);
@@ -222,9 +222,9 @@ TEST_CASE("a block slides down a frictional wall at Coulomb's rate", "[walls]") 
   // The staircase base of the lattice-cut block brakes it on free slip too (0.85 g sin θ, above),
   // so the friction is measured against the same block on free slip: the velocity friction takes
   // off, free − frictional, against Coulomb's μ g cos θ t = 0.114 m/s. Measured: 0.211 − 0.078 =
-  // 0.133 m/s, 1.17 of it (1.12 before the ghosts carried the soil's weight; the same block on a
-  // flat wall with gravity tilted, then: 1.20; the former
-  // switch, which read the stress: 0.210 − 0.178 = 0.032, 0.28 of it); the band is 0.85 to 1.3.
+  // 0.133 m/s, 1.17 of it (1.12 without the ghosts' weight, `ghost_body_force = false`; a friction
+  // read from the soil's shear stress instead of the slip would take off 0.210 − 0.178 = 0.032,
+  // 0.28 of it); the band is 0.85 to 1.3.
   const double coulomb_loss = 9.81 * mu * std::cos(theta) * 0.05;
   CHECK(m.along - free.along > 0.85 * coulomb_loss);
   CHECK(m.along - free.along < 1.30 * coulomb_loss);

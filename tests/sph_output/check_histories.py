@@ -30,7 +30,8 @@ def check(condition, message):
 
 
 def rows(name):
-    with open(run / name) as f:  # numpy would take the first '#' line for the names (README, point CSV)
+    # numpy would take the first '#' line for the names (docs/reference/output-formats.md)
+    with open(run / name) as f:
         data = np.genfromtxt((line for line in f if not line.startswith("#")), delimiter=",", names=True,
                              dtype=None, encoding="utf-8")
     return np.atleast_1d(data)

@@ -13,7 +13,7 @@ using namespace soilsph::verification;
 using Kind = Elasticity::Kind;
 
 namespace {
-/// The bound on the CVODE reference against a closed form.
+/// Our bound on the CVODE reference against a closed form.
 constexpr double kCvodeTolerance = 1e-5;
 
 struct Case {

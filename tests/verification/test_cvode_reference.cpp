@@ -70,7 +70,7 @@ TEST_CASE("cvode: reloading to a turning point that falls on an increment", "[cv
 TEST_CASE("cvode: D-P drained triaxial peak q = (3 alpha p_i + k_c)/(1/sqrt3 - alpha) (eq 17, 19)",
           "[cvode]") {
   // On the path σ_r = −p_i, σ_a = −(p_i + q): √J2 = q/√3 and I1 = −3p_i − q, so f = 0 (eq 17) gives
-  // q (1/√3 − α_φ) = 3 α_φ p_i + k_c (docs/derivations.md). Before yield q = E ε_a.
+  // q (1/√3 − α_φ) = 3 α_φ p_i + k_c (docs/method/derivations.md). Before yield q = E ε_a.
   const double cohesion = GENERATE(0.0, 5e3);
   const double dilatancy = GENERATE(0.0, 10.0);
   const DruckerPrager dp = test::table1_drucker_prager(cohesion, dilatancy);

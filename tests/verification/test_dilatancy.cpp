@@ -1,5 +1,5 @@
 // D-P dilatancy: the drained post-peak ratio dε_v/dε_a of the material-point driver, for every
-// integrator and the CVODE reference, against the flow rule's closed form (docs/derivations.md,
+// integrator and the CVODE reference, against the flow rule's closed form (docs/method/derivations.md,
 // "D-P plastic potential"). Expected values come from the formula, evaluated here from ψ alone.
 #include <catch2/catch.hpp>
 #include <cmath>

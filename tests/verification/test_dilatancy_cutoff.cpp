@@ -31,7 +31,7 @@ DruckerPrager drucker_prager(double cutoff) {
 }
 
 /// E = 10 MPa drained (its peak at ε_a = 2.9 %, 1 MPa's at 29 %), 1 MPa undrained (the stiffer soil's
-/// undrained path takes `substep` and the driver out of their depth: README, Known limits).
+/// undrained path takes `substep` and the driver out of their depth: docs/validation/known-limits.md).
 MohrCoulomb mohr_coulomb(double cutoff, double young_modulus) {
   MohrCoulomb::Params p;
   p.density = 2000.0, p.young_modulus = young_modulus, p.poisson_ratio = 0.3, p.friction_angle = 35.0;

@@ -323,7 +323,7 @@ TEST_CASE("soilsph point --path-tolerance: recorded in the header, one row per i
   for (std::string line; std::getline(rows, line);)
     if (!line.starts_with("#")) ++data_rows;
   CHECK(data_rows == 5);  // the initial state and 4 increments
-  // Without the option the header says nothing of sub-steps (files as before).
+  // Without the option the header says nothing of sub-steps (the file of a plain run).
   REQUIRE(point(base + " --out " + out.string(), log) == 0);
   CHECK(read(out).find("sub-steps") == std::string::npos);
   CHECK(point(base + " --path-tolerance 0.5", log) == 2);

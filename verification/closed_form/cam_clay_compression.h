@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Isotropic and oedometric (K0) compression of Modified Cam-Clay, with unloading and reloading, from
-/// p'_i with p_c0 = R0 p'_i. Derivations in docs/verification.md §MCC compression.
+/// p'_i with p_c0 = R0 p'_i. Derivations in docs/method/verification.md.
 ///  - Isotropic: ε_v = ε_v^e(p'_i → p') + (λ*−κ*) ln(p_c/p_c0) holds on any path; on the NCL p_c = p',
 ///    slope dε_v/d ln p' = λ* = λ/(1+e0) (pressure-dependent elasticity), on unloading κ* = κ/(1+e0).
 ///    Constant elasticity: the NCL point by root finding (GSL).

@@ -2,7 +2,7 @@
 /// @file
 /// Drained triaxial compression of Modified Cam-Clay from p'_i (radial stress held at −p'_i, so the
 /// stress path is p' = p'_i + q/3, slope 3) with p_c0 = R0 p'_i, yield on the wet side. Derivation in
-/// docs/verification.md §MCC drained.
+/// docs/method/verification.md.
 ///  - Failure on the CSL q = M p': q_f = 3 M p'_i / (3 − M) (needs M < 3).
 ///  - First yield: the positive root of q² = M² p'(p_c0 − p') with p' = p'_i + q/3.
 ///  - On the yield surface p_c = p' + q²/(M² p'), so in closed form

@@ -2,7 +2,7 @@
 /// @file
 /// Undrained (constant-volume) triaxial compression of Modified Cam-Clay from p'_0 with
 /// p_c0 = R0 p'_0, normally or lightly overconsolidated (1 ≤ R0 < 2, the wet side). Derivation in
-/// docs/verification.md §MCC undrained (after Wood 1990, §7.3 and §11.2).
+/// docs/method/verification.md (after Wood 1990, §7.3 and §11.2).
 ///  - Elastic: ε_v^e = 0 ⇒ p' = p'_0 (both elasticities), q = 3G(p'_0) ε_a up to the yield surface,
 ///    q_y = M √(p'_0 (p_c0 − p'_0)).
 ///  - Plastic: ε_v^p = −ε_v^e(p'_0 → p') fixes p_c(p') = p_c0 exp(−ε_v^e/(λ*−κ*)); the path is the

@@ -3,7 +3,7 @@
 /// Drucker–Prager under an axisymmetric strain path with fixed ratios, from an isotropic stress p_i:
 /// per unit axial strain (compression-positive) dε_v = r dε_a and dε_q = s dε_a, i.e. undrained triaxial
 /// (r = 0, s = 1), oedometer (r = 1, s = 2/3) and isotropic (r = 3, s = 0). Derivation in
-/// docs/derivations.md §D-P strain paths.
+/// docs/method/derivations.md.
 ///   elastic   dp = K r dε_a, dq = 3G s dε_a, until the cone q = √3 (3 α_φ p + k_c) (eq 17, triaxial
 ///             compression: √J2 = q/√3, I1 = −3p);
 ///   plastic   the potential g = √J2 + α_ψ I1 gives per unit dλ dε_v^p = −3 α_ψ, dε_q^p = 1/√3; staying

@@ -14,7 +14,7 @@ DruckerPragerDrainedTriaxial::DruckerPragerDrainedTriaxial(const DruckerPrager& 
   // Plastic strain rates of the potential g = √J2 + α_ψ I1 in triaxial compression, where
   // s/(2√J2) = diag(−1/√3, 1/(2√3), 1/(2√3)) (tension-positive): per unit dλ, compression-positive,
   // dε_a^p = 1/√3 − α_ψ and dε_v^p = −3 α_ψ. The stress is fixed, so the elastic strain is too
-  // (docs/derivations.md; α_ψ = 3 sinψ for the printed eq 20).
+  // (docs/method/derivations.md; α_ψ = 3 sinψ for the printed eq 20).
   const double alpha_psi = model.alpha_psi();
   const double axial_rate = 1.0 / root3 - alpha_psi;
   if (axial_rate <= 0.0)

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Drained triaxial compression of Drucker–Prager from an isotropic stress p_i: radial stress held at
-/// −p_i, axial strain ε_a driven (compression-positive). Derivation in docs/verification.md §D-P.
+/// −p_i, axial strain ε_a driven (compression-positive). Derivation in docs/method/verification.md.
 ///   elastic branch     q = E ε_a,  ε_v = (1 − 2ν) ε_a,  p = p_i + q/3
 ///   peak (eq 17, 19)   √J2 = q/√3, I1 = −3p = −3p_i − q  ⇒  q_peak = (3 α_φ p_i + k_c)/(1/√3 − α_φ)
 ///   perfectly plastic  stress fixed at the peak; the potential g = √J2 + α_ψ I1 gives

@@ -2,7 +2,7 @@
 /// @file
 /// Triaxial compression and extension of Mohr–Coulomb from an isotropic stress p_i, drained (radial
 /// stress held at p_i) or undrained (ε_v = 0, total radial stress held), axial strain ε_a driven
-/// (compression-positive; ε_a < 0 is extension). Derivation in docs/derivations.md, "Mohr–Coulomb".
+/// (compression-positive; ε_a < 0 is extension). Derivation in docs/method/derivations.md.
 /// With s = sinφ, t = sinψ, c cosφ, the sign σ = +1 (compression) or −1 (extension), and q = σ_a − σ_r:
 ///   drained    peak |q| = 2(c cosφ + p_i s)/(1 − σ s)   (the radial stress is the minor principal
 ///              stress in compression, the major in extension); elastic q = E ε_a, ε_v = (1 − 2ν) ε_a;

@@ -29,8 +29,8 @@ struct MixedControlOptions {
   int max_iterations = 50;
   int max_splits = 8;  ///< halvings of an increment whose Newton fails (up to 2^max_splits parts)
   /// Driver sub-steps (path_substeps.h): 0 (the default) solves each increment of a leg with stress-
-  /// imposed components once, as before; > 0 splits it into sub-steps until the step-doubling
-  /// estimate of the increment's error is ≤ this (relative). Strain-controlled legs are never split
+  /// imposed components once, meeting the imposed stresses at its end only; > 0 splits it into
+  /// sub-steps until the step-doubling estimate of the increment's error is ≤ this (relative). Strain-controlled legs are never split
   /// (their path is exact).
   double path_tolerance = 0.0;
   int max_path_substeps = 4096;  ///< per increment

@@ -1,13 +1,13 @@
 #pragma once
 /// @file
-/// Driver sub-steps of a mixed-control increment (`--path-tolerance`, issue #11 item 4).
+/// Driver sub-steps of a mixed-control increment (`--path-tolerance`).
 ///
 /// Why: one mixed-control increment imposes a straight strain path on the strain-imposed components
 /// and meets the imposed stresses only at its end; between the ends the free strains follow a
 /// straight line too, so the stress-imposed components are not held inside the increment. CVODE holds
 /// them throughout. The difference is a path error, O(Δε³) per increment and O(Δε²) over a path,
 /// whatever the integrator: on the drained triaxial path of the stiff clay (K = (1+e0)p/κ from
-/// 200 kPa) 2.5e-3 at 20 increments, above the 1e-3 target.
+/// 200 kPa) 2.5e-3 at 20 increments, above our goal of 1e-3.
 ///
 /// What: the increment is done as m sub-steps of Δε_i/m on the strain-imposed components, each
 /// meeting the imposed stresses interpolated linearly to its own end, σ*(j/m) = σ*_start +

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Programme files (`soilsph point PROGRAMME.toml`, docs/programmes.md): a laboratory programme
+/// Programme files (`soilsph point PROGRAMME.toml`, docs/reference/programmes.md): a laboratory programme
 /// written down. Inputs are compression-positive (stresses Pa, strains 1; shears as τ and γ = 2ε
 /// of the compression-positive tensors); x is the axial (vertical) direction.
 ///

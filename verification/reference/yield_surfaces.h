@@ -6,7 +6,7 @@
 /// edge, a corner, the apex) each flows with its own multiplier (Koiter 1953):
 ///   ε̇^p = Σ_{k∈J} λ̇_k n_g,k,   Σ_{k∈J} (n_f,j : D : n_g,k + H_j δ_jk) λ̇_k = n_f,j : D : ε̇   (j ∈ J),
 /// where the active set J is the one whose multipliers are all ≥ 0 while every other surface the
-/// stress lies on has ḟ ≤ 0: the Kuhn–Tucker conditions in rate form (docs/verification.md).
+/// stress lies on has ḟ ≤ 0: the Kuhn–Tucker conditions in rate form (docs/method/verification.md).
 #include <array>
 
 #include "constitutive/material.h"
