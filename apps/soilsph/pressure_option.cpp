@@ -45,12 +45,13 @@ std::optional<double> parse_pressure(std::string_view text) {
 }
 
 CLI::Validator pressure_in(const Range& range) {
-  const std::string allowed = " (allowed: " + range.describe() + " Pa; units " + std::string(kPressureUnits) +
-                              ", e.g. 100kPa; a plain number is Pa)";
+  const std::string allowed = " (allowed: " + range.describe() + " Pa)";
+  const std::string units =
+      " (give a number and a unit: " + std::string(kPressureUnits) + ", e.g. 100kPa; a plain number is Pa)";
   return CLI::Validator(
-      [range, allowed](std::string& text) -> std::string {
+      [range, allowed, units](std::string& text) -> std::string {
         const std::optional<double> pa = parse_pressure(text);
-        if (!pa) return text + " is not a pressure" + allowed;
+        if (!pa) return text + " is not a pressure" + units;
         if (!range.contains(*pa)) return text + " is out of range" + allowed;
         char buffer[32];
         const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, *pa);  // shortest round trip
