@@ -17,7 +17,9 @@ namespace {
 const std::string kRegions = R"(
 [scene]
 particle_spacing = 0.004
+smoothing_ratio = 1.3
 end_time = 0.01
+gravity = 9.81
 
 [[regions]]
 shape = "box"
@@ -34,7 +36,10 @@ const std::string kColumn = R"(
 column_width = 0.04
 column_height = 0.06
 particle_spacing = 0.004
+smoothing_ratio = 1.3
 end_time = 0.01
+gravity = 9.81
+wall_withdrawal = "instant"
 )" + fixtures::kDruckerPragerToml;
 
 bool has_deposit_table(const Scene& scene) {
