@@ -116,14 +116,34 @@ def extent(frames, spacing):
             y.min() - max(2 * pad, 0.5), GRID_CM * np.ceil((y.max() + pad) / GRID_CM))
 
 
+LABEL_INCHES = 0.45  # room a tick label such as "-24" takes along an axis, with a gap
+
+
+def label_step(span_cm, axis_inches):
+    """The spacing of the labelled ticks: the grid's, or the smallest multiple of it (2, 5, 10, ...
+    cells) whose labels fit side by side along an axis `axis_inches` long, so that the labels of a
+    wide scene do not overlap."""
+    room = max(2, int(axis_inches / LABEL_INCHES))
+    for cells in (1, 2, 5, 10, 20, 50, 100, 200, 500):
+        if span_cm / (GRID_CM * cells) <= room:
+            return GRID_CM * cells
+    return GRID_CM * 1000
+
+
 def prepare_axes(ax, limits, walls):
     """Equal aspect, cm axes, the paper's 2 cm background grid, the walls (polylines in cm) drawn."""
     ax.set_xlim(limits[0], limits[1])
     ax.set_ylim(limits[2], limits[3])
     ax.set_aspect("equal")
-    for set_ticks, low, high in ((ax.set_xticks, *limits[:2]), (ax.set_yticks, *limits[2:])):
-        set_ticks(np.arange(GRID_CM * np.ceil(low / GRID_CM), high + 1e-9, GRID_CM))
-    ax.grid(True, color="0.85", linewidth=0.6, zorder=0)
+    ax.apply_aspect()
+    box = ax.get_position()  # in figure fractions, once the aspect has shrunk it
+    width, height = ax.figure.get_size_inches()
+    for axis, low, high, inches in ((ax.xaxis, *limits[:2], box.width * width),
+                                    (ax.yaxis, *limits[2:], box.height * height)):
+        step = label_step(high - low, inches)
+        axis.set_ticks(np.arange(step * np.ceil(low / step), high + 1e-9, step))
+        axis.set_ticks(np.arange(GRID_CM * np.ceil(low / GRID_CM), high + 1e-9, GRID_CM), minor=True)
+    ax.grid(True, which="both", color="0.85", linewidth=0.6, zorder=0)
     ax.set_axisbelow(True)
     ax.set_xlabel("x (cm)")
     ax.set_ylabel("y (cm)")

@@ -16,8 +16,13 @@ Vec2 vector_or(const TableReader& t, const toml::table& table, std::string_view 
 }
 }  // namespace
 
-DepositFrame read_deposit(const TableReader& t, const toml::table& table, const Geometry& g, toml::table& resolved) {
+DepositFrame read_deposit(const TableReader& t, const toml::table& table, bool given, const Geometry& g,
+                          toml::table& resolved) {
   DepositFrame f;
+  if (!given && !g.column) {
+    f.defined = false;
+    return f;
+  }
   f.origin = vector_or(t, table, "origin", {g.column_width, 0.0}, "m");
   // By default across gravity, a quarter turn clockwise from it: −x for gravity along −y.
   const Vec2 down = g.down();

@@ -17,9 +17,11 @@ struct Geometry;
 
 /// [deposit] origin, direction, toe_thickness; the defaults are the column's measures: from
 /// (column_width, 0) along −x (in general across gravity, a quarter turn clockwise from it), toe
-/// thickness a tenth of the soil's height. `resolved` gets the
-/// table as read, defaults included.
-DepositFrame read_deposit(const TableReader& t, const toml::table& table, const Geometry& g, toml::table& resolved);
+/// thickness a tenth of the soil's height. A scene of [[regions]] measures its deposit only if the
+/// table is `given` (an empty one takes the defaults, the soil's largest x as the wall): else the
+/// frame is undefined (DepositFrame::defined). `resolved` gets the table as read, defaults included.
+DepositFrame read_deposit(const TableReader& t, const toml::table& table, bool given, const Geometry& g,
+                          toml::table& resolved);
 
 /// [[gauges]] name, position, kind; `resolved` gets each as read, defaults included.
 std::vector<Gauge> read_gauges(const toml::table& root, const std::string& source, toml::array& resolved);

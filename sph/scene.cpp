@@ -385,7 +385,7 @@ Scene read_scene(const toml::table& root, const std::string& source) {
   for (const TableReader* t : {&scene, &initial, &numerics, &output}) t->reject_unknown_keys();
   toml::table deposit_resolved;
   toml::array gauges_resolved;
-  result.deposit = read_deposit(deposit, deposit_table, result.geometry, deposit_resolved);
+  result.deposit = read_deposit(deposit, deposit_table, root.get("deposit") != nullptr, result.geometry, deposit_resolved);
   result.gauges = read_gauges(root, source, gauges_resolved);
   // Every named material is read (validated) even if unused, so a typo in one is never silent.
   for (std::size_t k = 0; k < materials.tables.size(); ++k)
@@ -404,7 +404,7 @@ Scene read_scene(const toml::table& root, const std::string& source) {
   }
   for (const char* key : {"regions", "boundaries"})
     if (const toml::node* v = extra.get(key)) result.resolved.insert(key, *v);
-  result.resolved.insert("deposit", std::move(deposit_resolved));
+  if (result.deposit.defined) result.resolved.insert("deposit", std::move(deposit_resolved));
   if (!gauges_resolved.empty()) result.resolved.insert("gauges", std::move(gauges_resolved));
   return result;
 }

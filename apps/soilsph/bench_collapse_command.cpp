@@ -12,9 +12,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <span>
 
 #include "apps/soilsph/commands.h"
+#include "apps/soilsph/data_dir.h"
 #include "sph/bench/bare_pair_loop.h"
 #include "sph/collapse.h"
 
@@ -23,7 +24,7 @@ namespace soilsph::cli {
 namespace {
 struct BenchOptions {
   std::string out = "results/bench-collapse";
-  std::string root = ".";
+  std::string root;  ///< empty: the shipped data (data_dir())
   std::vector<std::string> scenes{"collapse-dp", "collapse-mcc", "sphinxsys-column-collapse"};
   std::vector<std::string> overrides;
   double bare_seconds = 1.0;
@@ -53,107 +54,183 @@ double peak_rss_bytes() {
   return static_cast<double>(usage.ru_maxrss) * 1024.0;
 }
 
-void run_bench(const BenchOptions& o) {
-  using namespace soilsph::sph;
-  std::filesystem::create_directories(o.out);
-  const int cores = omp_get_num_procs();
-  std::vector<Measurement> rows;
-  std::ostringstream md;
-  md << "| scene | run | threads | t end (s) | at rest | steps | Δt min–max (µs) | wall (s), median "
-        "(min–max) | "
-        "particle-steps/s "
-        "| bare loop, 1 thread | ratio | runout (cm) | height (cm) | repose (°) |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const std::string& name : o.scenes) {
-    const std::string file = o.root + "/data/scenes/" + name + ".toml";
-    std::vector<std::string> base = o.overrides;
-    base.push_back("output.fields=[]");
-    const Scene reference = load_scene(file, base);
-    const Particles lattice = build_particles(reference);
+/// One timed configuration of a scene's run.
+struct Variant {
+  const char* run;  ///< "to rest" or "to end time"
+  int threads;      ///< 0: auto
+  bool to_end;      ///< run to the end time rather than stop at rest
+};
+
+/// To rest with one thread, with every core (if more than one) and auto; to the end time with auto.
+std::vector<Variant> variants_on(int cores) {
+  std::vector<Variant> variants{{"to rest", 1, false}};
+  if (cores > 1) variants.push_back({"to rest", cores, false});
+  variants.push_back({"to rest", 0, false});
+  variants.push_back({"to end time", 0, true});
+  return variants;
+}
+
+/// A scene as the bench runs it (no frames written), and its lattice, on which the bare loop runs.
+struct BenchScene {
+  std::string name, file;
+  std::vector<std::string> overrides;  ///< --set, then no output fields
+  sph::Particles lattice{};
+  double smoothing_length = 0.0;
+
+  double bare_rate(double seconds) const {
     const std::span<const double> x(lattice.x.data(), lattice.soil_count),
         y(lattice.y.data(), lattice.soil_count);
-    const double h = reference.geometry.smoothing_length();
-    struct Variant {
-      const char* run;
-      int threads;
-      bool to_end;
-    };
-    std::vector<Variant> variants{{"to rest", 1, false}};
-    if (cores > 1) variants.push_back({"to rest", cores, false});
-    variants.push_back({"to rest", 0, false});
-    variants.push_back({"to end time", 0, true});
-    std::vector<double> bare_rates{bare_pair_loop_rate(x, y, h, o.bare_seconds)};
-    std::vector<std::vector<double>> walls(variants.size()), rates(variants.size());
-    std::vector<Measurement> scene_rows;
-    for (int round = 0; round < o.rounds; ++round) {
-      for (std::size_t k = 0; k < variants.size(); ++k) {
-        const Variant& v = variants[k];
-        static const std::string kToEnd = "scene.stop_at_rest=false";
-        std::vector<std::string> overrides = base;
-        if (v.to_end) overrides.push_back(kToEnd);
-        const Scene scene = load_scene(file, overrides);
-        Collapse collapse(scene);
-        const ThreadTuner tuner = v.threads == 0 ? ThreadTuner(cores, true) : ThreadTuner(v.threads, false);
-        const RunStatistics stats = collapse.run(tuner);
-        const double rate = static_cast<double>(collapse.particles().soil_count) *
-                            static_cast<double>(stats.steps) / stats.wall_seconds;
-        if (round == 0)
-          scene_rows.push_back({name, v.run, v.threads, stats, collapse.deposit(), rate, 0, 0, 0, 0});
-        walls[k].push_back(stats.wall_seconds);
-        rates[k].push_back(rate);
-        std::printf("%s %s threads=%s (round %d): t=%.3f s, %zu steps, %.1f s wall, %.3g particle-steps/s\n",
-                    name.c_str(), v.run, v.threads == 0 ? "auto" : std::to_string(v.threads).c_str(),
-                    round + 1, stats.end_time, stats.steps, stats.wall_seconds, rate);
-        std::fflush(stdout);
-      }
-      bare_rates.push_back(bare_pair_loop_rate(x, y, h, o.bare_seconds));
-    }
-    // The bare loop of round r is the mean of the measurements before and after it.
-    std::vector<double> round_bare;
-    for (int round = 0; round < o.rounds; ++round)
-      round_bare.push_back(0.5 * (bare_rates[static_cast<std::size_t>(round)] +
-                                  bare_rates[static_cast<std::size_t>(round) + 1]));
-    const double bare = median(round_bare);
-    for (std::size_t k = 0; k < variants.size(); ++k) {
-      std::vector<double> ratios;
-      for (std::size_t r = 0; r < rates[k].size(); ++r) ratios.push_back(rates[k][r] / round_bare[r]);
-      Measurement& m = scene_rows[k];
-      m.stats.wall_seconds = median(walls[k]);
-      m.rate = median(rates[k]);
-      m.ratio = median(ratios);
-      m.wall_min = *std::min_element(walls[k].begin(), walls[k].end());
-      m.wall_max = *std::max_element(walls[k].begin(), walls[k].end());
-    }
-    std::string bare_list;
-    for (double b : bare_rates)
-      bare_list += (bare_list.empty() ? "" : ", ") + std::to_string(b / 1e6).substr(0, 4);
-    std::printf(
-        "%s: bare pair loop %.3g particle-steps/s (median of %d rounds; measured %se6); memory %.0f "
-        "B/particle\n",
-        name.c_str(), bare, o.rounds, bare_list.c_str(),
-        static_cast<double>(lattice.bytes() + scene_rows.back().stats.workspace_bytes) /
-            static_cast<double>(lattice.size()));
-    for (Measurement& m : scene_rows) {
-      m.bare_rate = bare;
-      char line[512];
-      std::snprintf(line, sizeof line,
-                    "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | "
-                    "%.2f | %.2f | "
-                    "%.1f |\n",
-                    m.scene.c_str(), m.run.c_str(),
-                    m.threads == 0 ? "auto" : std::to_string(m.threads).c_str(), m.stats.end_time,
-                    m.stats.stopped_at_rest ? "yes" : "no", m.stats.steps, 1e6 * m.stats.smallest_time_step,
-                    1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.wall_min, m.wall_max, m.rate,
-                    bare, m.ratio, 100 * m.deposit.runout_m, 100 * m.deposit.height_m,
-                    m.deposit.repose_angle_deg);
-      md << line;
-      rows.push_back(m);
-    }
-    md << "| " << name << " | memory | | | | | | | " << lattice.size() << " particles (soil + ghost) | "
-       << static_cast<long>((lattice.bytes() + scene_rows.back().stats.workspace_bytes) / lattice.size())
-       << " B/particle | | | | |\n";
+    return sph::bare_pair_loop_rate(x, y, smoothing_length, seconds);
   }
-  std::ofstream csv(o.out + "/bench_collapse.csv");
+  /// Bytes per particle (soil and ghost) of a run whose workspace took `workspace_bytes`.
+  double bytes_per_particle(std::size_t workspace_bytes) const {
+    return static_cast<double>(lattice.bytes() + workspace_bytes) / static_cast<double>(lattice.size());
+  }
+};
+
+BenchScene bench_scene(const BenchOptions& o, const std::string& name) {
+  const std::string root = o.root.empty() ? data_dir().string() : o.root;
+  BenchScene s{.name = name, .file = root + "/data/scenes/" + name + ".toml", .overrides = o.overrides};
+  s.overrides.push_back("output.fields=[]");
+  const sph::Scene reference = sph::load_scene(s.file, s.overrides);
+  s.lattice = sph::build_particles(reference);
+  s.smoothing_length = reference.geometry.smoothing_length();
+  return s;
+}
+
+/// One run of a variant: its statistics, deposit and soil particle-steps per second.
+struct TimedRun {
+  sph::RunStatistics stats;
+  sph::DepositMetrics deposit;
+  double rate;
+};
+
+TimedRun run_variant(const BenchScene& s, const Variant& v, int cores) {
+  std::vector<std::string> overrides = s.overrides;
+  if (v.to_end) overrides.push_back("scene.stop_at_rest=false");
+  const sph::Scene scene = sph::load_scene(s.file, overrides);
+  sph::Collapse collapse(scene);
+  const sph::ThreadTuner tuner =
+      v.threads == 0 ? sph::ThreadTuner(cores, true) : sph::ThreadTuner(v.threads, false);
+  const sph::RunStatistics stats = collapse.run(tuner);
+  const double rate = static_cast<double>(collapse.particles().soil_count) *
+                      static_cast<double>(stats.steps) / stats.wall_seconds;
+  return {stats, collapse.deposit(), rate};
+}
+
+std::string threads_label(int threads) {
+  return threads == 0 ? "auto" : std::to_string(threads);
+}
+
+void print_run(const BenchScene& s, const Variant& v, int round, const TimedRun& r) {
+  std::printf("%s %s threads=%s (round %d): t=%.3f s, %zu steps, %.1f s wall, %.3g particle-steps/s\n",
+              s.name.c_str(), v.run, threads_label(v.threads).c_str(), round + 1, r.stats.end_time,
+              r.stats.steps, r.stats.wall_seconds, r.rate);
+  std::fflush(stdout);
+}
+
+/// What the rounds measured: per variant the first round's run and every round's wall time and rate;
+/// the bare loop before the first round and after each.
+struct Rounds {
+  std::vector<TimedRun> first{};
+  std::vector<std::vector<double>> walls, rates;
+  std::vector<double> bare_rates;
+};
+
+/// Every variant once per round, the bare loop between rounds, so that a machine whose speed drifts
+/// slows every variant alike.
+Rounds run_rounds(const BenchScene& s, const std::vector<Variant>& variants, const BenchOptions& o,
+                  int cores) {
+  Rounds r{.walls = std::vector<std::vector<double>>(variants.size()),
+           .rates = std::vector<std::vector<double>>(variants.size()),
+           .bare_rates = {s.bare_rate(o.bare_seconds)}};
+  for (int round = 0; round < o.rounds; ++round) {
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+      const TimedRun run = run_variant(s, variants[k], cores);
+      if (round == 0) r.first.push_back(run);
+      r.walls[k].push_back(run.stats.wall_seconds);
+      r.rates[k].push_back(run.rate);
+      print_run(s, variants[k], round, run);
+    }
+    r.bare_rates.push_back(s.bare_rate(o.bare_seconds));
+  }
+  return r;
+}
+
+/// The bare loop of round r is the mean of the measurements before and after it.
+std::vector<double> bare_rate_per_round(const std::vector<double>& bare_rates) {
+  std::vector<double> per_round;
+  for (std::size_t round = 0; round + 1 < bare_rates.size(); ++round)
+    per_round.push_back(0.5 * (bare_rates[round] + bare_rates[round + 1]));
+  return per_round;
+}
+
+/// Each variant's row: the first round's run with the medians over the rounds of its wall time,
+/// rate and ratio to the bare loop.
+std::vector<Measurement> measurements(const BenchScene& s, const std::vector<Variant>& variants,
+                                      const Rounds& r) {
+  const std::vector<double> round_bare = bare_rate_per_round(r.bare_rates);
+  const double bare = median(round_bare);
+  std::vector<Measurement> rows;
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    std::vector<double> ratios;
+    for (std::size_t round = 0; round < r.rates[k].size(); ++round)
+      ratios.push_back(r.rates[k][round] / round_bare[round]);
+    Measurement m{.scene = s.name,
+                  .run = variants[k].run,
+                  .threads = variants[k].threads,
+                  .stats = r.first[k].stats,
+                  .deposit = r.first[k].deposit,
+                  .rate = median(r.rates[k]),
+                  .bare_rate = bare,
+                  .ratio = median(ratios),
+                  .wall_min = *std::min_element(r.walls[k].begin(), r.walls[k].end()),
+                  .wall_max = *std::max_element(r.walls[k].begin(), r.walls[k].end())};
+    m.stats.wall_seconds = median(r.walls[k]);
+    rows.push_back(m);
+  }
+  return rows;
+}
+
+void print_bare_loop(const BenchScene& s, const Rounds& r, const Measurement& last, int rounds) {
+  std::string bare_list;
+  for (double b : r.bare_rates)
+    bare_list += (bare_list.empty() ? "" : ", ") + std::to_string(b / 1e6).substr(0, 4);
+  std::printf(
+      "%s: bare pair loop %.3g particle-steps/s (median of %d rounds; measured %se6); memory %.0f "
+      "B/particle\n",
+      s.name.c_str(), last.bare_rate, rounds, bare_list.c_str(),
+      s.bytes_per_particle(last.stats.workspace_bytes));
+}
+
+constexpr const char* kMarkdownHeader =
+    "| scene | run | threads | t end (s) | at rest | steps | Δt min–max (µs) | wall (s), median (min–max) | "
+    "particle-steps/s | bare loop, 1 thread | ratio | runout (cm) | height (cm) | repose (°) |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+
+std::string markdown_row(const Measurement& m) {
+  char line[512];
+  std::snprintf(
+      line, sizeof line,
+      "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | %.2f | %.2f | "
+      "%.1f |\n",
+      m.scene.c_str(), m.run.c_str(), threads_label(m.threads).c_str(), m.stats.end_time,
+      m.stats.stopped_at_rest ? "yes" : "no", m.stats.steps, 1e6 * m.stats.smallest_time_step,
+      1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.wall_min, m.wall_max, m.rate, m.bare_rate,
+      m.ratio, 100 * m.deposit.runout_m, 100 * m.deposit.height_m, m.deposit.repose_angle_deg);
+  return line;
+}
+
+std::string markdown_memory_row(const BenchScene& s, const Measurement& last) {
+  return "| " + s.name + " | memory | | | | | | | " + std::to_string(s.lattice.size()) +
+         " particles (soil + ghost) | " +
+         std::to_string(
+             static_cast<long>((s.lattice.bytes() + last.stats.workspace_bytes) / s.lattice.size())) +
+         " B/particle | | | | |\n";
+}
+
+void write_csv(const std::string& file, const std::vector<Measurement>& rows, int rounds) {
+  std::ofstream csv(file);
   csv << "# soilsph bench collapse: SI units; rates in soil particle-steps/s; bare_rate: bare SPH pair loop, "
          "one thread, same run; threads 0 = auto; wall_seconds, particle_steps_per_second, bare_rate and "
          "ratio "
@@ -167,9 +244,27 @@ void run_bench(const BenchOptions& o) {
         << (m.stats.stopped_at_rest ? 1 : 0) << ',' << m.stats.steps << ',' << m.stats.smallest_time_step
         << ',' << m.stats.largest_time_step << ',' << m.stats.wall_seconds << ',' << m.rate << ','
         << m.bare_rate << ',' << m.ratio << ',' << m.deposit.runout_m << ',' << m.deposit.height_m << ','
-        << m.deposit.repose_angle_deg << ',' << o.rounds << ',' << m.wall_min << ',' << m.wall_max << '\n';
-  std::ofstream(o.out + "/bench_collapse.md") << md.str();
-  std::printf("%speak memory %.0f MB; wrote %s/bench_collapse.csv and .md\n", md.str().c_str(),
+        << m.deposit.repose_angle_deg << ',' << rounds << ',' << m.wall_min << ',' << m.wall_max << '\n';
+}
+
+void run_bench(const BenchOptions& o) {
+  std::filesystem::create_directories(o.out);
+  const int cores = omp_get_num_procs();
+  const std::vector<Variant> variants = variants_on(cores);
+  std::vector<Measurement> rows;
+  std::string md = kMarkdownHeader;
+  for (const std::string& name : o.scenes) {
+    const BenchScene scene = bench_scene(o, name);
+    const Rounds rounds = run_rounds(scene, variants, o, cores);
+    const std::vector<Measurement> scene_rows = measurements(scene, variants, rounds);
+    print_bare_loop(scene, rounds, scene_rows.back(), o.rounds);
+    for (const Measurement& m : scene_rows) md += markdown_row(m);
+    md += markdown_memory_row(scene, scene_rows.back());
+    rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
+  }
+  write_csv(o.out + "/bench_collapse.csv", rows, o.rounds);
+  std::ofstream(o.out + "/bench_collapse.md") << md;
+  std::printf("%speak memory %.0f MB; wrote %s/bench_collapse.csv and .md\n", md.c_str(),
               peak_rss_bytes() / 1e6, o.out.c_str());
 }
 }  // namespace
@@ -182,7 +277,7 @@ void add_bench_collapse_command(CLI::App& bench) {
   auto o = std::make_shared<BenchOptions>();
   cmd->add_option("--out", o->out, "output directory (bench_collapse.csv, bench_collapse.md)")
       ->capture_default_str();
-  cmd->add_option("--root", o->root, "project root holding data/scenes/")->capture_default_str();
+  cmd->add_option("--root", o->root, "folder holding data/scenes/ (default: the shipped data)");
   cmd->add_option("--scenes", o->scenes, "scene names in data/scenes/")
       ->delimiter(',')
       ->capture_default_str();

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "apps/soilsph/commands.h"
+#include "apps/soilsph/data_dir.h"
 #include "verification/work_precision.h"
 
 namespace soilsph::cli {
@@ -17,14 +18,15 @@ Material table1_material(const std::string& dir, const std::string& name) {
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
-  auto* bench = app.add_subcommand("bench", "Benchmarks");
+  auto* bench = app.add_subcommand(
+      "bench", "Benchmarks: point (the stress integrators' error against cost), collapse (SPH speed)");
   bench->require_subcommand(1);
   auto* point = bench->add_subcommand(
       "point",
       "Work-precision of explicit, substep and implicit against CVODE on triaxial and oedometer paths");
   struct Options {
     std::string out = "results/bench-point";
-    std::string data = ".";
+    std::string data;  ///< empty: the shipped data (data_dir())
     std::vector<int> increments;
     double min_seconds = 0.02;
     std::string only;
@@ -34,7 +36,7 @@ void add_bench_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   point->add_option("--out", o->out, "output directory (work_precision.csv)")->capture_default_str();
-  point->add_option("--root", o->data, "project root holding data/materials/")->capture_default_str();
+  point->add_option("--root", o->data, "folder holding data/materials/ (default: the shipped data)");
   point->add_option("--increments", o->increments, "increment counts (default 1,2,5,...,10000)")
       ->delimiter(',');
   point->add_option("--min-seconds", o->min_seconds, "CPU time to spend per measurement (median of repeats)")
@@ -75,7 +77,7 @@ void add_bench_command(CLI::App& app) {
                                      {"mcc-kp-200kPa-ocr1.5", "mcc-table1", true, 200e3, 1.5}};
     for (const Case& c : cases) {
       if (!o->only.empty() && o->only != c.label) continue;
-      Material material = table1_material(o->data, c.file);
+      Material material = table1_material(o->data.empty() ? data_dir().string() : o->data, c.file);
       if (c.pressure_dependent)
         material = with_edited_params(material, [](auto& params) {
           if constexpr (requires { params.elasticity; }) {

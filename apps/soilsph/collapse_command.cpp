@@ -9,6 +9,7 @@
 #include <charconv>
 #include <iostream>
 
+#include "apps/soilsph/collapse_preparation.h"
 #include "apps/soilsph/commands.h"
 #include "apps/soilsph/stop_signal.h"
 #include "constitutive/integrators/integrator.h"
@@ -48,7 +49,7 @@ sph::ThreadTuner thread_tuner(const std::string& option) {
 
 struct CollapseOptions {
   std::string scene;
-  std::string out = "results/collapse";
+  std::string out;               ///< empty: results/<the scene file's stem>
   std::string resume;            ///< a run folder to continue, or empty
   std::string threads = "auto";  ///< "auto" or a count
   std::vector<std::string> overrides;
@@ -161,147 +162,283 @@ void add_results(sph::Summary& s, const sph::RunStatistics& stats, const sph::Co
   s.fallback_stress_updates = stats.fallback_stress_updates;
 }
 
-void run_collapse(const CollapseOptions& o) {
-  using namespace soilsph::sph;
+/// SCENE starts a run, --resume DIR continues one: exactly one of them.
+void check_scene_or_resume(const CollapseOptions& o) {
   if (o.resume.empty() == o.scene.empty())
     throw ParameterError(o.scene.empty() ? "soilsph collapse needs a SCENE file, or --resume DIR"
                                          : "soilsph collapse takes a SCENE file or --resume DIR, not both");
-  const fs::path dir = o.resume.empty() ? fs::path(o.out) : fs::path(o.resume);
-  std::optional<Checkpoint> resumed;
-  if (!o.resume.empty()) {
-    check_resumable(o.overrides);
-    resumed = read_checkpoint(dir / "checkpoint.h5");
-  }
-  const Scene scene = resumed ? parse_scene(resumed->scene_toml, (dir / "checkpoint.h5").string() + " (scene)",
-                                            o.overrides)
-                              : load_scene(o.scene, o.overrides);
-  const ThreadTuner tuner = thread_tuner(o.threads);
-  const RunEstimate estimate = estimate_run(scene);
-  check_feasible(scene, estimate, 0.8 * physical_memory());
+}
 
-  // Building the particles refuses a lattice or geostatic state that --set made impossible: say so.
-  Collapse collapse = blaming_overrides(scene.overrides, [&] {
-    return resumed ? Collapse(scene, std::move(resumed->particles)) : Collapse(scene);
+/// The run's folder: the one --resume continues, --out, or results/<the scene file's stem>, so that
+/// runs of different scenes never replace each other.
+fs::path run_folder(const CollapseOptions& o) {
+  if (!o.resume.empty()) return o.resume;
+  if (!o.out.empty()) return o.out;
+  return fs::path("results") / fs::path(o.scene).stem();
+}
+
+/// The checkpoint --resume continues from (only the keys that keep it the same run may change), or
+/// nothing for a new run.
+std::optional<sph::Checkpoint> resumed_checkpoint(const CollapseOptions& o, const fs::path& dir) {
+  if (o.resume.empty()) return std::nullopt;
+  check_resumable(o.overrides);
+  return sph::read_checkpoint(dir / "checkpoint.h5");
+}
+
+/// The scene with the --set overrides: from its file, or for a resumed run from its checkpoint.
+sph::Scene scene_to_run(const CollapseOptions& o, const std::optional<sph::Checkpoint>& resumed,
+                        const fs::path& dir) {
+  if (resumed)
+    return sph::parse_scene(resumed->scene_toml, (dir / "checkpoint.h5").string() + " (scene)", o.overrides);
+  return sph::load_scene(o.scene, o.overrides);
+}
+
+/// The collapse at its start: the scene's particles (relaxed under gravity if it asks), or the
+/// checkpoint's. Building the particles refuses a lattice or geostatic state that --set made
+/// impossible: say so.
+sph::Collapse start_collapse(const sph::Scene& scene, std::optional<sph::Checkpoint>& resumed) {
+  return blaming_overrides(scene.overrides, [&] {
+    return resumed ? sph::Collapse(scene, std::move(resumed->particles)) : sph::Collapse(scene);
   });
-  if (const auto& relaxed = collapse.gravity_loading())
-    std::cout << "gravity loading: settled after " << relaxed->steps << " steps (" << relaxed->time
-              << " s of relaxation): kinetic energy / (M g H) = " << relaxed->kinetic_energy << " < "
-              << scene.initial.gravity_loading.kinetic_tolerance << ", stress change per step / (rho g H) = "
-              << relaxed->stress_change << " < " << scene.initial.gravity_loading.stress_tolerance
-              << "; the run starts from the relaxed soil at rest at t = 0" << std::endl;
-  if (resumed && collapse.particles().soil_count != estimate.soil_particles)
-    throw std::runtime_error((dir / "checkpoint.h5").string() + " holds " +
-                             std::to_string(collapse.particles().soil_count) + " soil particles; its scene has " +
-                             std::to_string(estimate.soil_particles));
-  const Particles& particles = collapse.particles();
-  const SolverSetup& setup = collapse.setup();
-  std::optional<Histories> histories;  // checks the gauges before anything is written
-  if (scene.output.history_interval > 0.0) histories.emplace(scene, particles, setup.kernel);
-  std::cout << (resumed ? dir.string() + " (resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s)"
-                        : o.scene)
-            << ": " << describe(scene, collapse, tuner.threads()).model << ", " << particles.soil_count << " soil + "
-            << particles.boundary_count() << " boundary particles, h = " << setup.kernel.smoothing_length()
-            << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step()
-            << " s at rest, to t = " << scene.geometry.end_time << " s" << (scene.rest.enabled ? " or rest" : "")
-            << " (at most about " << human_duration(estimate.seconds) << "), " << tuner.threads() << " thread(s)"
-            << (o.threads == "auto" ? " (auto: fewer while they are slower)" : "") << std::endl;
+}
 
-  // Nothing of an earlier run may stay beside this one's frames; the record is written first, so
-  // that even a run killed at once says what it was.
+void report_gravity_loading(const sph::Collapse& collapse, const sph::Scene& scene) {
+  const auto& relaxed = collapse.gravity_loading();
+  if (!relaxed) return;
+  std::cout << "gravity loading: settled after " << relaxed->steps << " steps (" << relaxed->time
+            << " s of relaxation): kinetic energy / (M g H) = " << relaxed->kinetic_energy << " < "
+            << scene.initial.gravity_loading.kinetic_tolerance
+            << ", stress change per step / (rho g H) = " << relaxed->stress_change << " < "
+            << scene.initial.gravity_loading.stress_tolerance
+            << "; the run starts from the relaxed soil at rest at t = 0" << std::endl;
+}
+
+/// A checkpoint must hold the soil its scene builds.
+void check_resumed_particles(const sph::Collapse& collapse, const sph::RunEstimate& estimate,
+                             const fs::path& dir) {
+  if (collapse.particles().soil_count != estimate.soil_particles)
+    throw std::runtime_error((dir / "checkpoint.h5").string() + " holds " +
+                             std::to_string(collapse.particles().soil_count) +
+                             " soil particles; its scene has " + std::to_string(estimate.soil_particles));
+}
+
+/// One line: what runs, how large, to when, for about how long, on how many threads.
+void announce_run(const CollapseOptions& o, const sph::Scene& scene, const sph::Collapse& collapse,
+                  const sph::RunEstimate& estimate, const sph::ThreadTuner& tuner,
+                  const std::optional<sph::Checkpoint>& resumed, const fs::path& dir) {
+  const sph::Particles& particles = collapse.particles();
+  const sph::SolverSetup& setup = collapse.setup();
+  std::cout << (resumed ? dir.string() + " (resumed at t = " + std::to_string(resumed->loop.stats.end_time) +
+                              " s)"
+                        : o.scene)
+            << ": " << describe(scene, collapse, tuner.threads()).model << ", " << particles.soil_count
+            << " soil + " << particles.boundary_count()
+            << " boundary particles, h = " << setup.kernel.smoothing_length()
+            << " m, c = " << setup.sound_speed << " m/s, dt = " << setup.initial_time_step()
+            << " s at rest, to t = " << scene.geometry.end_time << " s"
+            << (scene.rest.enabled ? " or rest" : "") << " (at most about "
+            << sph::human_duration(estimate.seconds) << "), " << tuner.threads() << " thread(s)"
+            << (o.threads == "auto" ? " (auto: fewer while they are slower)" : "") << std::endl;
+}
+
+/// What a run writes into its folder as it goes.
+struct RunFiles {
+  fs::path dir;
+  sph::FrameWriter frames;
+  std::string scene_text;  ///< the scene as run, saved in every checkpoint
+  std::optional<sph::Histories> histories;
+};
+
+/// The folder's files at the start: nothing of an earlier run may stay beside this one's frames
+/// (unless it is the run being continued), and the scene as run is written first, so that even a
+/// run killed at once says what it was.
+RunFiles open_run_files(const fs::path& dir, const sph::Scene& scene,
+                        const std::optional<sph::Checkpoint>& resumed,
+                        std::optional<sph::Histories> histories) {
   if (!resumed) remove_stale_results(dir);
-  FrameWriter writer =
-      resumed ? FrameWriter::continuing(dir, scene.output.fields, resumed->loop.stats.end_time)
-              : FrameWriter(dir, scene.output.fields);
-  const std::string scene_text = scene_toml(scene);
-  replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
-                                       std::string(kVersion) + ")\n# " + invocation() + "\n" + scene_text);
-  Summary summary = describe(scene, collapse, tuner.threads());
+  sph::FrameWriter frames =
+      resumed ? sph::FrameWriter::continuing(dir, scene.output.fields, resumed->loop.stats.end_time)
+              : sph::FrameWriter(dir, scene.output.fields);
+  std::string scene_text = sph::scene_toml(scene);
+  sph::replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
+                                            std::string(kVersion) + ")\n# " + invocation() + "\n" +
+                                            scene_text);
+  return {dir, std::move(frames), std::move(scene_text), std::move(histories)};
+}
+
+/// The summary a run starts with (complete: false, "running"); a resumed run's carries the
+/// figures of its checkpoint.
+sph::Summary starting_summary(const sph::Scene& scene, const sph::Collapse& collapse, int threads,
+                              const std::optional<sph::Checkpoint>& resumed) {
+  sph::Summary summary = describe(scene, collapse, threads);
   if (resumed) {
     summary.resumed_from = resumed->loop.stats.end_time;
     add_results(summary, resumed->loop.stats, collapse);
   }
-  write_summary_json(dir / "summary.json", summary);
+  return summary;
+}
 
-  FrameBuffers buffers;
-  Progress progress(scene.geometry.end_time);
-  const StopSignal signal;
-  RunControl control;
-  control.stop_requested = [&] { return signal.received() != 0; };
-  control.checkpoint = [&](const Particles& p, const LoopState& loop) {
-    write_checkpoint(dir / "checkpoint.h5", p, loop, scene_text);
+/// How the time loop reports back: a stop on a signal, checkpoints into the folder, the histories'
+/// samples; and where a resumed run continues from.
+sph::RunControl run_control(RunFiles& files, const sph::Scene& scene, const StopSignal& signal,
+                            const std::optional<sph::Checkpoint>& resumed) {
+  sph::RunControl control;
+  control.stop_requested = [&signal] { return signal.received() != 0; };
+  control.checkpoint = [&files](const sph::Particles& p, const sph::LoopState& loop) {
+    sph::write_checkpoint(files.dir / "checkpoint.h5", p, loop, files.scene_text);
   };
   if (resumed) control.resume = &resumed->loop;
-  if (histories) {
-    histories->open(dir, resumed ? resumed->loop.stats.end_time : -1.0);
-    control.on_sample = [&](const StepSample& s) { (*histories)(s); };
+  if (files.histories) {
+    files.histories->open(files.dir, resumed ? resumed->loop.stats.end_time : -1.0);
+    control.on_sample = [&files](const sph::StepSample& s) { (*files.histories)(s); };
     control.sample_interval = scene.output.history_interval;
-    control.first_sample = histories->first_sample();
+    control.first_sample = files.histories->first_sample();
   }
-  const auto on_frame = [&](const Particles& p, double t) { writer.write(buffers.view(p, t, scene.output.fields)); };
+  return control;
+}
+
+/// Runs the collapse, writing frames and progress as it goes; a run that fails records why in
+/// summary.json (complete: false) before the error is passed on.
+sph::RunStatistics run_with_frames(sph::Collapse& collapse, const sph::ThreadTuner& tuner, RunFiles& files,
+                                   const sph::RunControl& control, const sph::Scene& scene,
+                                   sph::Summary& summary) {
+  sph::FrameBuffers buffers;
+  sph::Progress progress(scene.geometry.end_time);
+  const auto on_frame = [&](const sph::Particles& p, double t) {
+    files.frames.write(buffers.view(p, t, scene.output.fields));
+  };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
-  RunStatistics stats;
   try {
-    stats = collapse.run(tuner, on_frame, on_step, control);
+    const sph::RunStatistics stats = collapse.run(tuner, on_frame, on_step, control);
+    progress.finish();
+    return stats;
   } catch (const std::exception& e) {
     progress.finish();
     summary.stop_reason = e.what();
-    write_summary_json(dir / "summary.json", summary);  // complete: false, and why
+    sph::write_summary_json(files.dir / "summary.json", summary);
     throw;
   }
-  progress.finish();
+}
+
+/// The summary at the end: the run's figures and why it stopped.
+void record_end(sph::Summary& summary, const sph::RunStatistics& stats, const sph::Collapse& collapse,
+                const StopSignal& signal, const fs::path& dir) {
   add_results(summary, stats, collapse);
-  summary.complete = stats.stop != StopReason::Request;
-  summary.stop_reason = stats.stop == StopReason::Rest      ? "at rest"
-                        : stats.stop == StopReason::EndTime ? "end time"
-                                                            : std::string("signal ") + StopSignal::name(signal.received());
-  write_summary_json(dir / "summary.json", summary);
-  if (stats.stop == StopReason::Request) {
-    std::cerr << "soilsph collapse: stopped by " << StopSignal::name(signal.received()) << " at t = " << stats.end_time
-              << " s after " << stats.steps << " steps; frames, checkpoint and summary.json are in " << dir.string()
-              << "/; continue with: soilsph collapse --resume " << dir.string() << '\n';
-    throw ExitCode{128 + signal.received()};
+  summary.complete = stats.stop != sph::StopReason::Request;
+  summary.stop_reason = stats.stop == sph::StopReason::Rest ? "at rest"
+                        : stats.stop == sph::StopReason::EndTime
+                            ? "end time"
+                            : std::string("signal ") + StopSignal::name(signal.received());
+  sph::write_summary_json(dir / "summary.json", summary);
+}
+
+/// A run stopped by a signal says where it is saved and how to go on, and exits with 128 + the signal.
+void exit_if_stopped_by_signal(const sph::RunStatistics& stats, const StopSignal& signal,
+                               const fs::path& dir) {
+  if (stats.stop != sph::StopReason::Request) return;
+  std::cerr << "soilsph collapse: stopped by " << StopSignal::name(signal.received())
+            << " at t = " << stats.end_time << " s after " << stats.steps
+            << " steps; frames, checkpoint and summary.json are in " << dir.string()
+            << "/; continue with: soilsph collapse --resume " << dir.string() << '\n';
+  throw ExitCode{128 + signal.received()};
+}
+
+void warn_if_wall_guard_acted(const sph::RunStatistics& stats, const sph::Scene& scene) {
+  if (stats.guard_corrections == 0) return;
+  std::cerr << "warning: the wall guard had to push soil particles back through a wall "
+            << stats.guard_corrections << " times (0 in a sound run; a smaller [numerics] cfl";
+  // Soft or overconsolidated MCC sheds grains that soften to dust and are compacted into the floor.
+  const bool unbounded_cam_clay = std::ranges::any_of(scene.materials, [](const Material& m) {
+    const auto* mcc = std::get_if<ModifiedCamClay>(&m);
+    return mcc && mcc->minimum_preconsolidation() == 0.0;
+  });
+  if (unbounded_cam_clay)
+    std::cerr << "; for modified-cam-clay soil a [material] minimum_preconsolidation such as 10 Pa, "
+                 "docs/validation/resolution.md";
+  std::cerr << ")\n";
+}
+
+/// A soil that loosens without bound (constitutive/models/loosening.h) jostles or scatters after the
+/// rest has stopped: say why when the run did not rest.
+void warn_if_not_at_rest(const sph::RunStatistics& stats, const sph::Scene& scene) {
+  if (!scene.rest.enabled || stats.stopped_at_rest || stats.stop != sph::StopReason::EndTime) return;
+  for (const Material& material : scene.materials)
+    if (const std::string why =
+            std::visit([](const auto& model) { return unbounded_loosening(model); }, material);
+        !why.empty())
+      std::cerr << "warning: the soil did not come to rest; " << why << '\n';
+}
+
+/// The deposit measures, or why a scene has none.
+void print_deposit(const sph::Summary& summary, const sph::Scene& scene) {
+  if (!scene.deposit.defined) {
+    std::cout
+        << "deposit (runout, height, repose angle) undefined: add a [deposit] table (origin and direction "
+           "of the runout) to measure it";
+    return;
   }
-  if (stats.guard_corrections > 0) {
-    std::cerr << "warning: the wall guard had to push soil particles back through a wall "
-              << stats.guard_corrections << " times (0 in a sound run; a smaller [numerics] cfl";
-    // Soft or overconsolidated MCC sheds grains that soften to dust and are compacted into the floor.
-    const bool unbounded_cam_clay = std::ranges::any_of(scene.materials, [](const Material& m) {
-      const auto* mcc = std::get_if<ModifiedCamClay>(&m);
-      return mcc && mcc->minimum_preconsolidation() == 0.0;
-    });
-    if (unbounded_cam_clay)
-      std::cerr << "; for modified-cam-clay soil a [material] minimum_preconsolidation such as 10 Pa, "
-                   "docs/validation/resolution.md";
-    std::cerr << ")\n";
-  }
-  // A soil that loosens without bound (constitutive/models/loosening.h) jostles or scatters after the
-  // rest has stopped: say why when the run did not rest.
-  if (scene.rest.enabled && !stats.stopped_at_rest && stats.stop == StopReason::EndTime)
-    for (const Material& material : scene.materials)
-      if (const std::string why =
-              std::visit([](const auto& model) { return unbounded_loosening(model); }, material);
-          !why.empty())
-        std::cerr << "warning: the soil did not come to rest; " << why << '\n';
-  if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
-  std::cout << "runout " << summary.runout_m << " m (" << summary.runout_thick_m << " m where H0/10 thick), height "
-            << summary.height_m << " m, repose angle " << summary.repose_angle_deg << " deg, max speed at end "
-            << summary.max_speed_end << " m/s, wall guard acted " << stats.guard_corrections << " times, "
-            << stats.fallback_stress_updates << " stress updates needed a fallback (stages/stress_update.h)\n"
+  std::cout << "runout " << summary.runout_m << " m (" << summary.runout_thick_m
+            << " m where H0/10 thick), height " << summary.height_m << " m, repose angle "
+            << summary.repose_angle_deg << " deg";
+}
+
+void report_results(const sph::Summary& summary, const sph::RunStatistics& stats, const sph::Scene& scene,
+                    const fs::path& dir) {
+  if (stats.stopped_at_rest)
+    std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
+  print_deposit(summary, scene);
+  std::cout << ", max speed at end " << summary.max_speed_end << " m/s, wall guard acted "
+            << stats.guard_corrections << " times, " << stats.fallback_stress_updates
+            << " stress updates needed a fallback (stages/stress_update.h)\n"
             << summary.wall_seconds << " s wall, " << summary.particle_steps_per_second
             << " particle-steps/s; output in " << dir.string() << "/\n";
+}
+
+void run_collapse(const CollapseOptions& o) {
+  check_scene_or_resume(o);
+  const fs::path dir = run_folder(o);
+  std::optional<sph::Checkpoint> resumed = resumed_checkpoint(o, dir);
+  const sph::Scene scene = scene_to_run(o, resumed, dir);
+  const sph::ThreadTuner tuner = thread_tuner(o.threads);
+  const sph::RunEstimate estimate = feasible_estimate(scene);
+  sph::Collapse collapse = start_collapse(scene, resumed);
+  report_gravity_loading(collapse, scene);
+  if (resumed) check_resumed_particles(collapse, estimate, dir);
+  std::optional<sph::Histories> histories = scene_histories(scene, collapse.particles(), collapse.setup());
+  announce_run(o, scene, collapse, estimate, tuner, resumed, dir);
+
+  RunFiles files = open_run_files(dir, scene, resumed, std::move(histories));
+  sph::Summary summary = starting_summary(scene, collapse, tuner.threads(), resumed);
+  sph::write_summary_json(dir / "summary.json", summary);
+  const StopSignal signal;
+  const sph::RunControl control = run_control(files, scene, signal, resumed);
+  const sph::RunStatistics stats = run_with_frames(collapse, tuner, files, control, scene, summary);
+  record_end(summary, stats, collapse, signal, dir);
+  exit_if_stopped_by_signal(stats, signal, dir);
+  warn_if_wall_guard_acted(stats, scene);
+  warn_if_not_at_rest(stats, scene);
+  report_results(summary, stats, scene, dir);
 }
 }  // namespace
 
 void add_collapse_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("collapse", "SPH collapse of a soil column (the paper's section 5)");
+  auto* cmd = app.add_subcommand("collapse",
+                                 "Run an SPH scene: a soil column collapse, a slope, a cut, several soils; "
+                                 "frames, checkpoint and summary.json in a folder");
   auto o = std::make_shared<CollapseOptions>();
-  cmd->add_option("SCENE", o->scene, "scene file (TOML: [scene], [initial], [material], [numerics], [output])")
+  cmd->add_option(
+         "SCENE", o->scene,
+         "scene file (TOML: [scene], [initial], [material] or [materials.NAME], [numerics], [output], "
+         "and optionally [[regions]], [[boundaries]], [deposit], [[gauges]]; soilsph examples lists "
+         "the shipped ones)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--out", o->out, "output folder (frames.h5, frames.xdmf, checkpoint.h5, scene.toml, summary.json)")
-      ->capture_default_str();
-  cmd->add_option("--resume", o->resume,
-                  "continue the run in this folder from its checkpoint.h5 (with --set scene.end_time=T to run "
-                  "further); frames are appended there")
+  cmd->add_option("--out", o->out,
+                  "output folder (frames.h5, frames.xdmf, checkpoint.h5, scene.toml, summary.json); default: "
+                  "results/ and the scene file's name without .toml");
+  cmd->add_option(
+         "--resume", o->resume,
+         "continue the run in this folder from its checkpoint.h5 (with --set scene.end_time=T to run "
+         "further); frames are appended there")
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--threads", o->threads,
                   "threads: a number (at most the cores), or auto: every core, one while the machine is too "

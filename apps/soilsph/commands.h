@@ -18,6 +18,9 @@ struct ExitCode {
 /// it beside the version: summary.json, point CSV headers).
 const std::string& invocation();
 
+/// A word as a POSIX shell reads it back: bare if it holds only safe characters, else single-quoted.
+std::string shell_quoted(const std::string& word);
+
 void add_material_command(CLI::App& app);
 void add_stress_test_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
@@ -27,5 +30,7 @@ void add_bench_collapse_command(CLI::App& bench);
 void add_point_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
 void add_collapse_command(CLI::App& app);
+void add_check_command(CLI::App& app);
+void add_examples_command(CLI::App& app);
 
 }  // namespace soilsph::cli

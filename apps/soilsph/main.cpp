@@ -3,6 +3,8 @@
 #include <csignal>
 #include <cstring>
 #include <iostream>
+#include <ranges>
+#include <vector>
 
 #include "apps/soilsph/commands.h"
 #include "constitutive/parameters.h"
@@ -12,7 +14,29 @@ namespace soilsph::cli {
 namespace {
 std::string g_invocation;
 
-/// A word as a POSIX shell reads it back: bare if it holds only safe characters, else single-quoted.
+/// The commands `soilsph --help` lists, in its groups: adding a command is adding its line here.
+struct CommandGroup {
+  const char* title;
+  std::vector<void (*)(CLI::App&)> add;
+};
+const CommandGroup kCommandGroups[] = {
+    {"Commands",
+     {add_examples_command, add_collapse_command, add_check_command, add_point_command, add_material_command,
+      add_verify_command}},
+    {"Developer commands", {add_stress_test_command, add_bench_command}},
+};
+
+void add_commands(CLI::App& app) {
+  for (const CommandGroup& group : kCommandGroups)
+    for (const auto add : group.add) {
+      const std::size_t before = app.get_subcommands({}).size();
+      add(app);
+      for (CLI::App* command : app.get_subcommands({}) | std::views::drop(before))
+        command->group(group.title);
+    }
+}
+}  // namespace
+
 std::string shell_quoted(const std::string& word) {
   const bool safe = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
                                                            "0123456789_-+=.,/:@%") == std::string::npos;
@@ -21,7 +45,6 @@ std::string shell_quoted(const std::string& word) {
   for (const char c : word) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
 }
-}  // namespace
 
 const std::string& invocation() { return g_invocation; }
 
@@ -40,16 +63,14 @@ using soilsph::cli::one_line;
 int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i)
     soilsph::cli::g_invocation += (i ? " " : "") + soilsph::cli::shell_quoted(i ? argv[i] : "soilsph");
+  // Named here, so that the usage line says `soilsph` wherever the executable lies.
   CLI::App app{"soilsph: elastic-plastic soil models (Drucker-Prager, Modified Cam-Clay, Mohr-Coulomb), "
-               "their material-point verification, and SPH soil-collapse simulation"};
+               "their material-point verification, and SPH soil-collapse simulation",
+               "soilsph"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("soilsph ") + soilsph::kVersion);
-  soilsph::cli::add_material_command(app);
-  soilsph::cli::add_stress_test_command(app);
-  soilsph::cli::add_bench_command(app);
-  soilsph::cli::add_point_command(app);
-  soilsph::cli::add_verify_command(app);
-  soilsph::cli::add_collapse_command(app);
+  soilsph::cli::add_commands(app);
+  app.footer("Start with `soilsph examples`; `soilsph COMMAND --help` describes each command.");
   // A closed pipe is a write error reported below, not a silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   // Past a file-size limit (ulimit -f) a write fails with EFBIG and is reported, instead of SIGXFSZ

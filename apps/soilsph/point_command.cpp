@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
+#include "apps/soilsph/pressure_option.h"
 #include "apps/soilsph/range_validator.h"
 #include "constitutive/material_description.h"
 #include "constitutive/parameters.h"
@@ -235,8 +236,8 @@ void add_point_command(CLI::App& app) {
       "Run a material-point test (triaxial, oedometer, isotropic, strain path) or a programme file; write its CSV");
   auto o = std::make_shared<PointOptions>();
   cmd->add_option("FILE", o->material_path,
-                  "a programme file ([initial] and [[leg]] tables, docs/reference/programmes.md), or a TOML "
-                  "file with a [material] table (a scene file works too) run with --test")
+                  "a programme file ([initial] and [[leg]] tables; soilsph examples lists the shipped ones), or a "
+                  "TOML file with a [material] table (a scene file works too) run with --test")
       ->required()
       ->check(CLI::ExistingFile);
   auto* test = cmd->add_option("--test", o->test,
@@ -246,9 +247,11 @@ void add_point_command(CLI::App& app) {
                   "CSV of strain increments d_xx,d_yy,d_zz,d_xy,d_yz,d_xz (tension-positive), one per row")
       ->check(CLI::ExistingFile);
   auto* p_initial = cmd->add_option("--p-initial", o->p_initial,
-                  "initial isotropic effective stress, Pa (compression-positive)")
-      ->capture_default_str()
-      ->check(in_range(limits::p_initial(), "Pa"));
+                                    "initial isotropic effective stress, compression-positive, with a unit "
+                                    "(100kPa, 0.1MPa) or in Pa")
+                        ->capture_default_str()
+                        ->transform(pressure_in(limits::p_initial()))
+                        ->type_name("PRESSURE");
   auto* ocr = cmd->add_option("--ocr", o->ocr, "overconsolidation ratio, MCC p_c0 = OCR * p_initial (MCC only)")
       ->capture_default_str()
       ->check(in_range(limits::ocr()));

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "apps/soilsph/commands.h"
+#include "apps/soilsph/data_dir.h"
 #include "soilsph/version.h"
 #include "verification/report/report_writer.h"
 
@@ -14,21 +15,15 @@ namespace soilsph::cli {
 namespace {
 struct VerifyOptions {
   std::string out = "results/verification";
-  std::string cases = SOILSPH_SOURCE_DIR "/verification/cases";
+  std::string cases;  ///< empty: the shipped cases (data_dir()/verification/cases)
   std::string python = "/usr/bin/python3";  // Debian's, with matplotlib (scripts/setup.sh)
   bool plots = true;
 };
 
-/// Single-quotes `s` for the shell.
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 void run(const VerifyOptions& o) {
   using namespace verification;
-  const std::vector<VerificationCase> cases = read_cases(o.cases);
+  const std::vector<VerificationCase> cases =
+      read_cases(o.cases.empty() ? (data_dir() / "verification" / "cases").string() : o.cases);
   std::vector<CaseResult> results;
   std::size_t failed = 0;
   for (const VerificationCase& c : cases) {
@@ -43,9 +38,9 @@ void run(const VerifyOptions& o) {
   write_report(o.out, results, provenance);
   std::cout << "report: " << (std::filesystem::path(o.out) / "report.md").string() << '\n';
   if (o.plots) {
-    const std::string command = quoted(o.python) + " " +
-                                quoted(SOILSPH_SOURCE_DIR "/scripts/plot_verification.py") + " " +
-                                quoted(o.out);
+    const std::string command = shell_quoted(o.python) + " " +
+                                shell_quoted((data_dir() / "scripts" / "plot_verification.py").string()) + " " +
+                                shell_quoted(o.out);
     if (std::system(command.c_str()) != 0) throw std::runtime_error("plotting failed: " + command);
   }
   if (failed > 0)
@@ -60,9 +55,10 @@ void add_verify_command(CLI::App& app) {
   auto o = std::make_shared<VerifyOptions>();
   cmd->add_option("--out", o->out, "Output folder (report.md, csv/, plots/, cases.json)")
       ->capture_default_str();
-  cmd->add_option("--cases", o->cases, "A case file or a folder of *.toml case files")
-      ->check(CLI::ExistingPath)
-      ->capture_default_str();
+  cmd->add_option("--cases", o->cases,
+                  "A case file or a folder of *.toml case files (default: the shipped cases, soilsph examples "
+                  "lists them)")
+      ->check(CLI::ExistingPath);
   cmd->add_flag("!--no-plots", o->plots, "Skip the PNG plots");
   cmd->add_option("--python", o->python, "Python with matplotlib for the plots")->capture_default_str();
   cmd->callback([o] { run(*o); });

@@ -160,6 +160,10 @@ DepositMetrics measure_deposit(std::span<const double> x, std::span<const double
   if (x.size() != y.size())
     throw std::invalid_argument("measure_deposit: x and y must be of equal length (got " + std::to_string(x.size()) +
                                 " and " + std::to_string(y.size()) + ")");
+  if (!frame.defined) {
+    constexpr double undefined = std::numeric_limits<double>::quiet_NaN();
+    return {undefined, undefined, undefined, undefined};
+  }
   std::vector<double> along(x.size()), height(x.size());
   const double floor = dot(frame.up, frame.origin);
   for (std::size_t i = 0; i < x.size(); ++i) {

@@ -41,11 +41,16 @@ inline constexpr double repose_band_low = 0.1, repose_band_high = 0.9;
 /// the unit `direction` from `origin`, height along `up` (the unit normal of `direction` against gravity) above
 /// the origin, and the repose angle is the surface's slope in that frame. The column's frame is
 /// origin (W, 0), direction (−1, 0), up (0, 1): the definitions above, to the bit.
+///
+/// A scene of [[regions]] without [deposit] has no frame of its own (its soil need not stand against a
+/// wall on a floor): its frame is undefined and its measures are NaN, rather than numbers measured
+/// from a column's wall that the scene does not have.
 struct DepositFrame {
   Vec2 origin;
   Vec2 direction{-1.0, 0.0};
   Vec2 up{0.0, 1.0};
   double toe_thickness = 0.0;  ///< t of runout_thick_m (m); 0: not measured
+  bool defined = true;         ///< false: no frame; every measure is NaN
 };
 
 /// x, y of the soil particles; fixed_wall_x = W; spacing = initial particle spacing (for robust
@@ -54,9 +59,10 @@ struct DepositFrame {
 DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, double fixed_wall_x,
                                double spacing, double toe_thickness = 0.0);
 
-/// The same in `frame`: the particles are taken to the coordinates (−direction·x, up·(x − origin)),
-/// in which the frame's origin is a fixed wall at −direction·origin on the floor y = 0. The rotation
-/// alone (no shift along the flow) keeps the column's numbers bit-identical.
+/// The same in `frame` (NaN throughout if the frame is undefined): the particles are taken to the
+/// coordinates (−direction·x, up·(x − origin)), in which the frame's origin is a fixed wall at
+/// −direction·origin on the floor y = 0. The rotation alone (no shift along the flow) keeps the
+/// column's numbers bit-identical.
 DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, const DepositFrame& frame,
                                double spacing);
 
