@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   soilsph::cli::add_point_command(app);
   soilsph::cli::add_verify_command(app);
   soilsph::cli::add_collapse_command(app);
+  soilsph::cli::add_calibrate_command(app);
   // A closed pipe is a write error reported below, not a silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   // Past a file-size limit (ulimit -f) a write fails with EFBIG and is reported, instead of SIGXFSZ
