@@ -86,3 +86,30 @@ TEST_CASE("Drucker-Prager and Mohr-Coulomb: phi, c, psi and E recovered from dra
     }
   }
 }
+
+TEST_CASE("Several starts: each fitted, the lowest misfit kept, all recorded", "[calibration]") {
+  const TempDir dir;
+  const std::string truth =
+      kCamClay + "compression_index = 0.2\nswelling_index = 0.04\nfriction_angle = 28\n";
+  const std::string start =
+      kCamClay + "compression_index = 0.26\nswelling_index = 0.028\nfriction_angle = 36.4\n";
+  const std::string fit =
+      "starts = 3\nseed = 7\nparameters = { compression_index = [0.05, 0.5], swelling_index = "
+      "[0.005, 0.045], friction_angle = [15, 45] }\n";
+  const std::vector<SyntheticTest> tests = cam_clay_tests(40);
+  std::vector<std::string> csvs;
+  for (const SyntheticTest& test : tests) csvs.push_back(measured_csv(dir, truth, test, 2));
+  const Calibration result = calibrate(read_calibration_file(calibration_file(dir, start, fit, tests, csvs)));
+  REQUIRE(result.starts.size() == 3);
+  CHECK(result.starts[0].start == std::vector<double>{0.26, 0.028, 36.4});
+  // Random starts lie in the middle 80 % of the bounds in ln x: 15 · 3^0.1 to 15 · 3^0.9 degrees.
+  for (std::size_t s = 1; s < 3; ++s) {
+    CHECK(result.starts[s].start != result.starts[0].start);
+    CHECK(result.starts[s].start[2] > 15.0 * std::pow(3.0, 0.1));
+    CHECK(result.starts[s].start[2] < 15.0 * std::pow(3.0, 0.9));
+  }
+  for (const StartRun& run : result.starts)
+    CHECK(result.starts[result.best].fit.residuals.squaredNorm() <= run.fit.residuals.squaredNorm());
+  CHECK(std::abs(result.values[0] / 0.2 - 1.0) < 1e-6);
+  CHECK(std::abs(result.values[2] / 28.0 - 1.0) < 1e-6);
+}

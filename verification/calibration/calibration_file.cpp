@@ -5,6 +5,7 @@
 
 #include "constitutive/parameters.h"
 #include "verification/calibration/point_columns.h"
+#include "verification/driver/rate_independence.h"
 #include "verification/programme/programme_file.h"
 
 namespace soilsph::calibration {
@@ -36,7 +37,7 @@ MaterialTemplate read_material_template(const toml::table& root, const std::stri
   const toml::table* table = holder["material"].as_table();
   if (!table) throw ParameterError(source + ": no [material] table");
   const TableReader reader(*table, source, "material");
-  read_material(reader);
+  warn_if_rate_dependent(read_material(reader), source);
   return {.table = reader.resolved(), .source = source, .keys = {}};
 }
 
@@ -186,12 +187,21 @@ Experiment read_experiment(const toml::table& table, const std::string& path, st
   e.data = read_measured_curve(data_path, against, match, units, e.where);
   // The programme must read with the fitted material in place of its own: its file's messages now.
   e.programme = parse_toml_file(e.programme_path);
-  e.programme.insert_or_assign("material", material.table);
-  verification::read_programme(e.programme, e.programme_path);
+  experiment_programme(e, material.table);  // its errors are the programme file's, said now
   return e;
 }
 
 }  // namespace
+
+verification::ProgrammeFile experiment_programme(const Experiment& e, const toml::table& material) {
+  toml::table root = e.programme;
+  root.insert_or_assign("material", material);
+  // The driver is rate-independent: a relaxation time (a collapse's key) would only be warned about
+  // at every run; read_material_template has said it once.
+  if (const auto tau = material["viscoplastic_relaxation_time"].value<double>(); tau && *tau > 0.0)
+    root["material"].as_table()->insert_or_assign("viscoplastic_relaxation_time", 0.0);
+  return verification::read_programme(root, e.programme_path);
+}
 
 CalibrationFile read_calibration_file(const std::string& path) {
   const toml::table root = parse_toml_file(path);

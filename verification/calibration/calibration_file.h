@@ -21,6 +21,7 @@
 
 #include "verification/calibration/material_values.h"
 #include "verification/calibration/measured_data.h"
+#include "verification/programme/programme_file.h"
 
 namespace soilsph::calibration {
 
@@ -65,5 +66,8 @@ struct CalibrationFile {
 };
 
 CalibrationFile read_calibration_file(const std::string& path);
+
+/// Experiment `e`'s programme with `material` (a [material] table) in place of its own.
+verification::ProgrammeFile experiment_programme(const Experiment& e, const toml::table& material);
 
 }  // namespace soilsph::calibration

@@ -7,7 +7,6 @@
 
 #include "constitutive/parameters.h"
 #include "verification/calibration/point_columns.h"
-#include "verification/programme/programme_file.h"
 
 namespace soilsph::calibration {
 
@@ -74,9 +73,7 @@ ModelCurve interpolated(const verification::PointCurve& run, const MeasuredCurve
 }  // namespace
 
 verification::PointCurve run_experiment(const Experiment& e, const toml::table& material) {
-  toml::table root = e.programme;
-  root.insert_or_assign("material", material);
-  const verification::ProgrammeFile programme = verification::read_programme(root, e.programme_path);
+  const verification::ProgrammeFile programme = experiment_programme(e, material);
   return verification::run_programme(programme.material, programme.programme,
                                      integrator_of(programme.material));
 }
