@@ -30,6 +30,7 @@ void add_bench_collapse_command(CLI::App& bench);
 void add_point_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
 void add_collapse_command(CLI::App& app);
+void add_calibrate_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_examples_command(CLI::App& app);
 

@@ -22,7 +22,7 @@ struct CommandGroup {
 const CommandGroup kCommandGroups[] = {
     {"Commands",
      {add_examples_command, add_collapse_command, add_check_command, add_point_command, add_material_command,
-      add_verify_command}},
+      add_verify_command, add_calibrate_command}},
     {"Developer commands", {add_stress_test_command, add_bench_command}},
 };
 

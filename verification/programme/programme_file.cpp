@@ -189,7 +189,10 @@ bool is_programme_file(const std::string& path) {
 }
 
 ProgrammeFile read_programme_file(const std::string& path, std::span<const std::string> overrides) {
-  const toml::table root = parse_toml_file(path);
+  return read_programme(parse_toml_file(path), path, overrides);
+}
+
+ProgrammeFile read_programme(const toml::table& root, const std::string& path, std::span<const std::string> overrides) {
   for (const auto& [key, value] : root) {
     if (key.str() != "material" && key.str() != "initial" && key.str() != "leg" && key.str() != "path_tolerance")
       throw ParameterError(path + ": " + std::string(key.str()) +

@@ -38,5 +38,9 @@ bool is_programme_file(const std::string& path);
 
 /// Reads a programme; `overrides` are `--set material.KEY=VALUE` applied to its material.
 ProgrammeFile read_programme_file(const std::string& path, std::span<const std::string> overrides = {});
+/// read_programme_file() of a file already parsed into `root` (a caller that runs one programme with
+/// many materials replaces its `material` and reads it again without parsing the file each time).
+ProgrammeFile read_programme(const toml::table& root, const std::string& path,
+                             std::span<const std::string> overrides = {});
 
 }  // namespace soilsph::verification
