@@ -19,6 +19,8 @@ using namespace soilsph;
 using namespace soilsph::sph;
 using Catch::Matchers::Contains;
 
+static_assert(SolidShape<Extrusion> && SolidShape<StlSolid>);
+
 namespace {
 /// The cube [0, a]³, each face two facets split along a diagonal, normals outward (right-handed).
 std::vector<Triangle> cube(double a) {
