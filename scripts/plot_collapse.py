@@ -22,6 +22,20 @@ drawn from summary.json's "boundaries" where they stand at each picture's time (
 disappears, a moving one moves); the extent is that of the particles of the frames drawn.
 The velocity pictures need the field `velocity` or `speed` and deposit.png needs `layer` ([output]
 fields of the scene): if a run lacks one, the script says which field is missing and skips that picture.
+
+A 3D run (summary.json's inputs.scene.dimension = 3) gets instead, with up against gravity
+(inputs.scene.gravity; a number means up = +y) and the column's axis through inputs.deposit.axis
+(default the origin) along up:
+  DIR/section.png                         a vertical section through the axis (the particles within one
+                                          spacing of the plane through the axis), four frames from the
+                                          first to the last, coloured by speed where the frames have it
+  DIR/height_map.png                      plan view of the final deposit: the height of its top particle
+                                          over each cell of one spacing, the initial column's rim and the
+                                          measured runout_radius_m as circles
+  DIR/radial_profile.png                  the top particle's height against the distance from the axis,
+                                          initial column and final deposit (and each --compare run's),
+                                          with Lube et al. (2004)'s r_inf and H_inf for the column's
+                                          aspect ratio (inputs.scene column_radius, column_height)
 """
 import argparse
 import json
@@ -71,6 +85,7 @@ class Run:
             self.label += " [INCOMPLETE RUN]"
         spacing = self.summary.get("particle_spacing") or 0.0
         self.spacing = spacing if spacing > 0 else self.estimate_spacing()
+        self.dimension = self.summary.get("inputs", {}).get("scene", {}).get("dimension", 2)
 
     def frame(self, index):
         """Positions (m) and, where the frame holds them, speed (m/s) and layer ids of frame `index`."""
@@ -359,6 +374,171 @@ def plot_profiles(runs):
     plt.close(fig)
 
 
+class Axis:
+    """The column's axis of a 3D run: a point on the floor, up against gravity, and two horizontal unit
+    vectors e1, e2 (the first two world axes not along up) in which azimuth and plan view are drawn."""
+
+    def __init__(self, run):
+        inputs = run.summary.get("inputs", {})
+        gravity = inputs.get("scene", {}).get("gravity", 9.81)
+        g = np.array(gravity, dtype=float) if isinstance(gravity, list) else np.array([0.0, -1.0, 0.0])
+        self.up = -g / np.linalg.norm(g)
+        self.point = np.array(inputs.get("deposit", {}).get("axis", [0.0, 0.0, 0.0]), dtype=float)
+        horizontal = []
+        for world in np.eye(3):
+            e = world - world.dot(self.up) * self.up
+            for f in horizontal:
+                e = e - e.dot(f) * f
+            if np.linalg.norm(e) > 1e-6 and len(horizontal) < 2:
+                horizontal.append(e / np.linalg.norm(e))
+        self.e1, self.e2 = horizontal
+
+    def coordinates(self, position):
+        """(e1, e2, height) of each particle relative to the axis point."""
+        d = position - self.point
+        return d @ self.e1, d @ self.e2, d @ self.up
+
+
+def frame_3d(run, axis, index):
+    """Axis coordinates (m) and, where the frame holds them, the speeds (m/s) of frame `index`."""
+    group = run.h5[run.names[index]]
+    a, b, h = axis.coordinates(group["position"][()])
+    frame = {"time": run.times[index], "a": a, "b": b, "h": h, "r": np.hypot(a, b)}
+    if "velocity" in group:
+        frame["speed"] = np.linalg.norm(group["velocity"][()], axis=1)
+    elif "speed" in group:
+        frame["speed"] = group["speed"][()]
+    return frame
+
+
+def lube_2004(a):
+    """Lube, Huppert, Sparks & Hallworth (2004), J. Fluid Mech. 508: (r_inf - r0)/r0 and H_inf/r0 for
+    the aspect ratio a = H0/r0 (sph/analysis/axisymmetric_deposit.h, which says why min())."""
+    runout = 1.24 * a if a <= 1.7 else 1.6 * np.sqrt(a)
+    return runout, min(a, 0.88 * a ** (1.0 / 6.0))
+
+
+def radial_profile(frame, spacing):
+    """The top particle's height (cm) in each ring of one spacing about the axis, against its radius."""
+    ring = np.floor(frame["r"] / spacing).astype(np.int64)
+    order = np.lexsort((frame["h"], ring))
+    top = order[np.r_[ring[order][1:] != ring[order][:-1], True]]
+    # Down to the floor beyond the last ring, so the rim (the initial column's vertical face) shows.
+    return np.r_[frame["r"][top], frame["r"][top[-1]]] * CM, np.r_[frame["h"][top], 0.0] * CM
+
+
+def plot_section(run, axis):
+    indices = sorted(set(np.linspace(0, len(run.names) - 1, 4).round().astype(int)))
+    frames = [frame_3d(run, axis, i) for i in indices]
+    band = [np.abs(f["b"]) <= run.spacing for f in frames]
+    a_all = np.concatenate([f["a"][m] for f, m in zip(frames, band)]) * CM
+    h_all = np.concatenate([f["h"][m] for f, m in zip(frames, band)]) * CM
+    pad = run.spacing * CM
+    limits = (GRID_CM * np.floor((a_all.min() - pad) / GRID_CM), GRID_CM * np.ceil((a_all.max() + pad) / GRID_CM),
+              min(h_all.min() - 2 * pad, -0.5), GRID_CM * np.ceil((h_all.max() + pad) / GRID_CM))
+    coloured = all("speed" in f for f in frames)
+    vmax = max(max(float(f["speed"].max()) for f in frames), 1e-12) if coloured else 1.0
+    fig, axes = plt.subplots(2, 2, figsize=(13, 7.5), dpi=150, constrained_layout=True)
+    for ax, frame, inside in zip(axes.flat, frames, band):
+        floor = (np.array([limits[0], limits[1]]), np.array([-0.5 * pad, -0.5 * pad]))
+        prepare_axes(ax, limits, [floor])
+        ax.set_xlabel("distance along the section from the axis (cm)")
+        ax.set_ylabel("height (cm)")
+        colour = frame["speed"][inside] if coloured else "#b08850"
+        points = ax.scatter(frame["a"][inside] * CM, frame["h"][inside] * CM, c=colour, cmap="turbo", vmin=0.0,
+                            vmax=vmax, marker="s", s=marker_area(ax, run.spacing), linewidths=0, zorder=2)
+        ax.axvline(0.0, color="0.4", linestyle=":", linewidth=1.0)
+        ax.set_title(f"t = {frame['time']:.3f} s")
+    for ax in list(axes.flat)[len(frames):]:
+        ax.set_visible(False)
+    if coloured:
+        fig.colorbar(points, ax=axes, shrink=0.8, label="velocity magnitude (m/s)")
+    else:
+        print(f"plot_collapse: {run.dir / 'frames.h5'} has no velocity or speed field ([output] fields): "
+              "section.png drawn without speeds", file=sys.stderr)
+    fig.suptitle(f"{run.label}: vertical section through the axis (particles within one spacing of it)")
+    fig.savefig(run.dir / "section.png")
+    plt.close(fig)
+
+
+def initial_rim(run, axis):
+    """The initial column's radius (m): the farthest particle of the first frame's bottom layer."""
+    first = frame_3d(run, axis, 0)
+    return float(first["r"][first["h"] <= run.spacing].max(initial=first["r"].max()))
+
+
+def plot_height_map(run, axis):
+    final = frame_3d(run, axis, len(run.names) - 1)
+    dx = run.spacing
+    i, j = np.floor(final["a"] / dx).astype(np.int64), np.floor(final["b"] / dx).astype(np.int64)
+    i0, j0 = i.min(), j.min()
+    height = np.full((j.max() - j0 + 1, i.max() - i0 + 1), np.nan)
+    np.fmax.at(height, (j - j0, i - i0), final["h"] * CM)
+    fig, ax = plt.subplots(figsize=(7.5, 6.5), dpi=150)
+    extent = np.array([i0, i.max() + 1, j0, j.max() + 1]) * dx * CM
+    image = ax.imshow(height, origin="lower", extent=extent, cmap="viridis", interpolation="nearest", zorder=2)
+    fig.colorbar(image, ax=ax, shrink=0.8, label="height of the top particle (cm)")
+    theta = np.linspace(0.0, 2.0 * np.pi, 361)
+    rim = initial_rim(run, axis) * CM
+    ax.plot(rim * np.cos(theta), rim * np.sin(theta), color="black", linestyle="--", linewidth=1.2, zorder=3,
+            label="initial column")
+    runout = run.summary.get("runout_radius_m")
+    if run.complete and isinstance(runout, (int, float)):
+        ax.plot(runout * CM * np.cos(theta), runout * CM * np.sin(theta), color="red", linewidth=1.2, zorder=3,
+                label=f"runout_radius_m = {runout * CM:.2f} cm")
+    ax.set_xlim(extent[0], extent[1])
+    ax.set_ylim(extent[2], extent[3])
+    ax.set_aspect("equal")
+    ax.set_xlabel("horizontal (cm), e1")
+    ax.set_ylabel("horizontal (cm), e2")
+    ax.legend(loc="upper right", fontsize=8)
+    ax.set_title(f"{run.label}: deposit height at t = {final['time']:.3f} s (plan view)")
+    fig.savefig(run.dir / "height_map.png", bbox_inches="tight")
+    plt.close(fig)
+
+
+def plot_radial_profile(runs):
+    first = runs[0]
+    fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
+    axis = Axis(first)
+    r, h = radial_profile(frame_3d(first, axis, 0), first.spacing)
+    ax.plot(r, h, color="0.5", linestyle="--", drawstyle="steps-mid", label="initial column")
+    for run in runs:
+        final = frame_3d(run, Axis(run), len(run.names) - 1)
+        r, h = radial_profile(final, run.spacing)
+        line, = ax.plot(r, h, drawstyle="steps-mid", linewidth=1.8,
+                        label=f"{run.label}, dx = {run.spacing * 1e3:g} mm (t = {final['time']:.2f} s)")
+        runout = run.summary.get("runout_radius_m")
+        if run.complete and isinstance(runout, (int, float)):
+            ax.plot([runout * CM], [0.0], marker="^", markersize=9, color=line.get_color(), clip_on=False, zorder=4)
+    scene = first.summary.get("inputs", {}).get("scene", {})
+    r0, h0 = scene.get("column_radius"), scene.get("column_height")
+    if isinstance(r0, (int, float)) and isinstance(h0, (int, float)) and r0 > 0:
+        runout_ratio, height_ratio = lube_2004(h0 / r0)
+        ax.axvline((1.0 + runout_ratio) * r0 * CM, color="black", linestyle=":",
+                   label=f"Lube et al. 2004: r_inf, H_inf for a = {h0 / r0:.2f}")
+        ax.plot([0.0], [height_ratio * r0 * CM], marker="o", color="black", clip_on=False, zorder=4)
+    ax.set_xlim(left=0.0)
+    ax.set_ylim(bottom=0.0)
+    ax.set_xlabel("distance from the axis (cm)")
+    ax.set_ylabel("height of the top particle (cm)")
+    ax.grid(True, color="0.85", linewidth=0.6)
+    ax.legend(loc="upper right", fontsize=8)
+    ax.set_title("radial profile (▲: runout_radius_m)")
+    fig.savefig(first.dir / "radial_profile.png", bbox_inches="tight")
+    plt.close(fig)
+
+
+def plot_3d(run, others, labels):
+    """The pictures of a 3D run; `others` (--compare) add their final profiles to radial_profile.png."""
+    for r, label in zip([run] + others, labels):
+        r.label = label + (" [INCOMPLETE RUN]" if not r.complete else "")
+    axis = Axis(run)
+    plot_section(run, axis)
+    plot_height_map(run, axis)
+    plot_radial_profile([run] + others)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -375,6 +555,11 @@ def main():
     run = Run(args.dir)
     if args.labels:
         run.label = args.labels[0] + (" [INCOMPLETE RUN]" if not run.complete else "")
+    if run.dimension == 3:
+        plot_3d(run, [Run(d) for d in args.compare], args.labels)
+        written = sorted(p.name for p in run.dir.glob("*.png"))
+        print(f"plot_collapse: wrote {', '.join(written) or 'no picture'} in {run.dir}")
+        return
     plot_velocity(run)
     plot_deposit(run, args.colour)
     plot_histories(run)

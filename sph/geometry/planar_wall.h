@@ -1,0 +1,37 @@
+#pragma once
+/// @file
+/// A wall of space: a plane polygon (a rectangle, the floor, any simple outline) holding the soil
+/// on one side (docs/method/geometry-3d.md, "Planar walls").
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sph/geometry/vec2.h"
+#include "sph/geometry/vec3.h"
+
+namespace soilsph::sph {
+
+struct PlanarWall {
+  Vec3 origin;                ///< the outline's first vertex
+  Vec3 inward;                ///< unit normal towards the soil
+  Vec3 u, v;                  ///< unit in-plane axes, u × v = inward
+  std::vector<Vec2> outline;  ///< vertices in (u, v) from origin, counter-clockwise seen from the soil
+
+  /// Signed distance of p from the plane, > 0 on the soil's side.
+  double height_above(Vec3 p) const { return dot(p - origin, inward); }
+  /// The plane coordinates (u, v) of p's projection on the plane.
+  Vec2 in_plane(Vec3 p) const { return {dot(p - origin, u), dot(p - origin, v)}; }
+  /// The point of the plane at plane coordinates q.
+  Vec3 at(Vec2 q) const { return origin + q.x * u + q.y * v; }
+};
+
+/// The wall through `points` (≥ 3 vertices of a simple polygon, counter-clockwise seen from the
+/// soil: the right-hand rule makes the normal point into the soil, as a 2D wall holds the soil on
+/// its left). Throws ParameterError naming `what`: fewer than 3 points, a point not finite, points
+/// off one plane (by more than 10⁻⁹ of the extent), or an outline that is not a simple polygon.
+PlanarWall make_planar_wall(std::span<const Vec3> points, const std::string& what);
+
+/// The rectangle corner, corner + a, corner + a + b, corner + b; the soil on the side of a × b.
+PlanarWall rectangle_wall(Vec3 corner, Vec3 a, Vec3 b, const std::string& what);
+
+}  // namespace soilsph::sph
