@@ -119,7 +119,10 @@ SelfReference self_reference(const Material& material, PointTest test, int incre
   }
   const double coarse = largest_q_difference(runs[0], runs[1]), fine = largest_q_difference(runs[1], runs[2]);
   SelfReference reference{runs[2], finest, std::numeric_limits<double>::quiet_NaN()};
-  if (coarse > 0.0 && fine > 0.0) {
+  double q_scale = 0.0;
+  for (const PointRecord& r : runs[2]) q_scale = std::max(q_scale, std::abs(r.q));
+  // Differences at round-off (an update exact on the path) have no order: u_F is the reference.
+  if (coarse > 1e-12 * q_scale && fine > 1e-12 * q_scale) {
     reference.observed_order = std::log2(coarse / fine);
     const double factor = 1.0 / (std::pow(2.0, reference.observed_order) - 1.0);
     for (std::size_t k = 0; k < reference.curve.size(); ++k) {
@@ -151,7 +154,9 @@ std::vector<WorkPrecisionRow> work_precision(const std::string& material_name, c
       std::ostringstream note;
       note << material_name << ", " << load_path_name(test.path) << ": reference = Richardson extrapolation of its "
            << "own runs at " << umat_reference->finest / 4 << ", " << umat_reference->finest / 2 << " and "
-           << umat_reference->finest << " increments per leg, observed order " << umat_reference->observed_order;
+           << umat_reference->finest << " increments per leg, observed order "
+           << (std::isnan(umat_reference->observed_order) ? std::string("none (their differences are at round-off)")
+                                                          : std::to_string(umat_reference->observed_order));
       notes->push_back(note.str());
     }
   }

@@ -52,7 +52,7 @@ std::vector<WorkPrecisionRow> work_precision(const std::string& material_name, c
 struct SelfReference {
   PointCurve curve;  ///< at `increments` per leg; only q and p are extrapolated
   int finest = 0;    ///< F
-  double observed_order = 0.0;  ///< NaN where the differences vanish
+  double observed_order = 0.0;  ///< NaN where the differences are at round-off (1e-12 of max |q|)
 };
 SelfReference self_reference(const Material& material, PointTest test, int increments);
 

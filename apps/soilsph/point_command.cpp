@@ -213,7 +213,8 @@ verification::PointCurve run_checked(const PointOptions& o, const Material& mate
     throw ParameterError(e.what());
   } catch (const std::runtime_error& e) {  // a run that failed or lost meaning, at the named increment
     throw std::runtime_error(source + " (" + std::string(model_name(material)) + ", " +
-                             integrator_label(o, integrator) + "): " + e.what());
+                             (is_umat(material) ? std::string("its own update") : integrator_label(o, integrator)) +
+                             "): " + e.what());
   }
 }
 
