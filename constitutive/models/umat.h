@@ -53,9 +53,9 @@ inline constexpr std::string_view kUmatTangentNames[] = {"ddsdde", "finite-diffe
 
 /// Where and when a call happens: what the caller knows besides the state (SPH: the particle).
 struct UmatCall {
-  int element = 1;                 ///< NOEL: the particle or test id
-  int point = 1;                   ///< NPT
-  double time_increment = 1.0;     ///< DTIME (s); at a point each increment is one unit of time
+  int element = 1;                     ///< NOEL: the particle or test id
+  int point = 1;                       ///< NPT
+  double time_increment = 1.0;         ///< DTIME (s); at a point each increment is one unit of time
   double characteristic_length = 1.0;  ///< CELENT (m): the particle spacing, or 1 at a point
   Vec3 coordinates = Vec3::Zero();     ///< COORDS (m)
 };
@@ -112,7 +112,8 @@ class UmatModel : public NoHardeningVariable {
  private:
   struct Outcome;
   /// One call from `state` (already rotated) with DROT = `rotation`; no halving.
-  Outcome call(const State& state, const Vec6& strain_increment, const Mat3& rotation, const UmatCall& call) const;
+  Outcome call(const State& state, const Vec6& strain_increment, const Mat3& rotation,
+               const UmatCall& call) const;
   /// The increment with PNEWDT answered by halving; `tangent` gets the last call's DDSDDE.
   State advance(const State& state, const Vec6& strain_increment, const Mat3& rotation, const UmatCall& call,
                 int halvings, Mat6* tangent) const;

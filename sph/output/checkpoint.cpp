@@ -67,8 +67,9 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
   std::filesystem::path temporary = file;
   temporary += ".tmp";
   const std::size_t n = p.size(), soil = p.soil_count;
-  ensure_room(temporary, 8 * (Particles::kParticleArrays * n + (kStateValues + kUmatValues + 8) * soil + 2 * n) +
-                             scene_toml.size() + 64 * 1024);
+  ensure_room(temporary,
+              8 * (Particles::kParticleArrays * n + (kStateValues + kUmatValues + 8) * soil + 2 * n) +
+                  scene_toml.size() + 64 * 1024);
   try {
     const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
     Handle h5(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose,
@@ -91,7 +92,8 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
     if (std::any_of(p.state.begin(), p.state.end(), [](const State& s) { return s.umat.increment > 0; })) {
       std::vector<double> umat(kUmatValues * soil);
       for (std::size_t i = 0; i < soil; ++i) pack_umat(p.state[i].umat, &umat[kUmatValues * i]);
-      hdf5::write_dataset(h5, "umat_state", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, soil, kUmatValues, umat.data(), where);
+      hdf5::write_dataset(h5, "umat_state", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, soil, kUmatValues, umat.data(),
+                          where);
     }
     hdf5::write_dataset(h5, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, soil, 1, p.layer.data(), where);
     hdf5::write_dataset(h5, "boundary_kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, p.boundary_kind.size(), 1,
