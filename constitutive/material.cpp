@@ -8,14 +8,28 @@
 
 namespace soilsph {
 
+namespace {
+/// A UMAT plug-in: its library is loaded and called once here, and what goes wrong is said of the file.
+UmatModel read_umat(const TableReader& table) {
+  const UmatModel::Params params = UmatModel::Params::read(table);
+  try {
+    return UmatModel(params);
+  } catch (const ParameterError& e) {
+    throw ParameterError(table.source() + ": [" + table.table_name() + "] " + e.what());
+  }
+}
+}  // namespace
+
 Material read_material(const TableReader& table) {
   const std::string model =
-      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName, MohrCoulomb::kName});
+      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName, MohrCoulomb::kName,
+                             UmatModel::kName});
   const Material material = [&]() -> Material {
     try {
       if (model == DruckerPrager::kName) return DruckerPrager(DruckerPrager::Params::read(table));
       if (model == ModifiedCamClay::kName) return ModifiedCamClay(ModifiedCamClay::Params::read(table));
       if (model == MohrCoulomb::kName) return MohrCoulomb(MohrCoulomb::Params::read(table));
+      if (model == UmatModel::kName) return read_umat(table);
       return LinearElastic(LinearElastic::Params::read(table));
     } catch (const DerivedConstantError& e) {  // the constructor's check, said of the file's key
       table.fail_value(e.key(), format_number(e.value()), e.reason());
@@ -61,6 +75,8 @@ double viscoplastic_relaxation_time(const Material& material) {
 double density(const Material& material) {
   return std::visit([](const auto& model) { return model.params().density; }, material);
 }
+
+bool has_rate_form(const Material& material) { return !std::holds_alternative<UmatModel>(material); }
 
 bool has_preconsolidation(const Material& material) {
   return std::visit([](const auto& model) { return std::decay_t<decltype(model)>::kHasPreconsolidation; }, material);

@@ -13,11 +13,12 @@
 #include "constitutive/models/linear_elastic.h"
 #include "constitutive/models/modified_cam_clay.h"
 #include "constitutive/models/mohr_coulomb.h"
+#include "constitutive/models/umat.h"
 
 namespace soilsph {
 
-using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay, MohrCoulomb>;
-static_assert(ConstitutiveModel<LinearElastic>);
+using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay, MohrCoulomb, UmatModel>;
+static_assert(ConstitutiveModel<LinearElastic> && ConstitutiveModel<UmatModel>);
 static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay> && PlasticModel<MohrCoulomb>);
 
 /// Every key a `[material]` table may hold, whichever model it selects.
@@ -25,7 +26,9 @@ inline constexpr std::string_view kMaterialKeys[] = {
     "model", "density", "young_modulus", "poisson_ratio", "friction_angle", "cohesion", "dilatancy_angle",
     "compression_index", "swelling_index", "initial_void_ratio", "elasticity", "elastic_pressure_floor",
     "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential",
-    "tension_cutoff", "dilatancy_cutoff", "minimum_preconsolidation", "viscoplastic_relaxation_time"};
+    "tension_cutoff", "dilatancy_cutoff", "minimum_preconsolidation", "viscoplastic_relaxation_time",
+    // model = "umat" (models/umat.h)
+    "library", "symbol", "name", "props", "state_variables", "initial_state", "stress_unit", "thread_safe"};
 
 /// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
 /// other models are reported on stderr as ignored; keys no model knows are errors.
@@ -56,6 +59,11 @@ double density(const Material& material);
 /// The Duvaut–Lions relaxation time τ of the SPH solver (s; constitutive/viscoplastic_relaxation.h):
 /// 0 for a rate-independent material and for linear elasticity.
 double viscoplastic_relaxation_time(const Material& material);
+
+/// Whether the model exposes its rate equations, which the CVODE reference integrates: every built-in
+/// model does; a UMAT plug-in offers only its incremental update (its work–precision reference is its
+/// own solution at a fine increment).
+bool has_rate_form(const Material& material);
 
 /// Whether the model has a preconsolidation pressure, i.e. whether an OCR applies to it.
 bool has_preconsolidation(const Material& material);

@@ -86,6 +86,25 @@ Parameters parameters(const MohrCoulomb& m) {
     out.emplace_back("tension_cutoff", number(p.tension_cutoff));
   return out;
 }
+std::string numbers(const std::vector<double>& values) {
+  std::string list;
+  for (const double v : values) list += (list.empty() ? "" : ", ") + number(v);
+  return "[" + list + "]";
+}
+Parameters parameters(const UmatModel& m) {
+  const auto& p = m.params();
+  Parameters out;
+  add_common(out, UmatModel::kName, p.density);
+  out.emplace_back("library", quoted(p.library));
+  out.emplace_back("symbol", quoted(p.symbol));
+  out.emplace_back("name", quoted(p.name));
+  out.emplace_back("props", numbers(p.props));
+  out.emplace_back("state_variables", std::to_string(p.state_variables));
+  if (!p.initial_state.empty()) out.emplace_back("initial_state", numbers(p.initial_state));
+  out.emplace_back("stress_unit", quoted(kStressUnitNames[static_cast<int>(p.stress_unit)]));
+  out.emplace_back("thread_safe", p.thread_safe ? "true" : "false");
+  return out;
+}
 }  // namespace
 
 std::string exact_number(double x) {

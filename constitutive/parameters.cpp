@@ -151,6 +151,42 @@ std::string TableReader::choice(std::string_view key, std::span<const std::strin
   fail_value(key, "\"" + *value + "\"", "is not allowed (allowed: " + options + ")");
 }
 
+std::string TableReader::string_or(std::string_view key, std::string_view fallback) const {
+  const toml::node* node = find(key);
+  if (!node) {
+    record(key, std::string(fallback));
+    return std::string(fallback);
+  }
+  const std::optional<std::string> value = node->value_exact<std::string>();
+  if (!value) fail(key, "must be a string");
+  record(key, *value);
+  return *value;
+}
+
+std::vector<double> TableReader::numbers_or(std::string_view key, std::span<const double> fallback,
+                                            Range range) const {
+  const toml::node* node = find(key);
+  std::vector<double> values(fallback.begin(), fallback.end());
+  if (node) {
+    const toml::array* array = node->as_array();
+    if (!array) fail(key, "must be an array of numbers (allowed: " + range.describe() + ")");
+    values.clear();
+    for (std::size_t k = 0; k < array->size(); ++k) {
+      const toml::node& element = *array->get(k);
+      const std::optional<double> value = element.value<double>();
+      const std::string position = "element " + std::to_string(k + 1);
+      if (!value || element.is_boolean()) fail(key, position + " must be a number");
+      if (!range.contains(*value))
+        fail(key, position + " = " + format_number(*value) + " is out of range (allowed: " + range.describe() + ")");
+      values.push_back(*value);
+    }
+  }
+  toml::array resolved;
+  for (const double v : values) resolved.push_back(v);
+  record(key, std::move(resolved));
+  return values;
+}
+
 std::string TableReader::word(std::string_view key) const {
   const toml::node* node = find(key);
   if (!node) fail(key, "is missing (a name of letters, digits, '_' and '-')");

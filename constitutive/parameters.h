@@ -75,6 +75,11 @@ class TableReader {
                         std::initializer_list<std::string_view> allowed) const {
     return choice_or(key, fallback, std::span(allowed.begin(), allowed.size()));
   }
+  /// An optional string of any content; `fallback` when the key is absent.
+  std::string string_or(std::string_view key, std::string_view fallback) const;
+  /// An optional array of numbers, each in `range`; `fallback` when the key is absent. An element
+  /// that is not a number or is out of range is an error naming its position.
+  std::vector<double> numbers_or(std::string_view key, std::span<const double> fallback, Range range) const;
   /// A required name: a non-empty string of letters, digits, '_' and '-' (it labels output rows).
   std::string word(std::string_view key) const;
   /// An optional array of distinct strings, each one of `allowed`; `fallback` when the key is absent.

@@ -2,9 +2,28 @@
 /// @file
 /// The state carried by one material point between updates. One struct for every model: models
 /// without a hardening variable keep `pc = 0`.
+#include <array>
+
 #include "constitutive/tensor.h"
 
 namespace soilsph {
+
+/// The most state variables (NSTATV) a UMAT plug-in may declare (models/umat.h): a fixed capacity so
+/// that a state is copied without a heap allocation, set when soilsph is configured
+/// (-DSOILSPH_MAX_STATE_VARIABLES=N).
+#ifndef SOILSPH_MAX_STATE_VARIABLES
+#define SOILSPH_MAX_STATE_VARIABLES 16
+#endif
+inline constexpr int kMaxStateVariables = SOILSPH_MAX_STATE_VARIABLES;
+
+/// What a UMAT plug-in carries between calls besides the stress (models/umat.h); unused (zero) for
+/// every built-in model.
+struct UmatVariables {
+  std::array<double, kMaxStateVariables> statev{};  ///< STATEV(1..NSTATV)
+  std::array<double, 6> strain{};  ///< STRAN: total strain, Voigt 11, 22, 33, 12, 13, 23, engineering shears
+  double time = 0.0;               ///< TIME at the start of the next increment (s; increments at a point)
+  int increment = 0;               ///< KINC of the last call
+};
 
 struct State {
   Mat3 stress = Mat3::Zero();  ///< effective stress σ, tension-positive (Pa)
@@ -15,6 +34,7 @@ struct State {
   /// dilatancy cut-off (models/dilatancy_cutoff.h), which stops dilating when it reaches the cut-off;
   /// 0 for every other model.
   double plastic_dilation = 0.0;
+  UmatVariables umat;  ///< a UMAT plug-in's state variables, strain and time
 };
 
 /// Where an updated state lies among the corners of a model's stress space that integrators find

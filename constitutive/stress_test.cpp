@@ -155,7 +155,8 @@ StressTestResult run_stress_test(const Material& material, Integrator integrator
       [&](const auto& model) -> StressTestResult {
         using Model = std::decay_t<decltype(model)>;
         if constexpr (!PlasticModel<Model>) {
-          throw std::invalid_argument("stress test: linear elasticity has no integrator to test");
+          throw std::invalid_argument("stress test: a " + std::string(Model::kName) +
+                                      " material has no integrator of soilsph's to test");
         } else {
           auto params = model.params();
           params.integrator = integrator;

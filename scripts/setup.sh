@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(
-  build-essential cmake pkg-config               # toolchain
+  build-essential cmake pkg-config gfortran      # toolchain (gfortran: the UMAT plug-ins)
   libeigen3-dev libsundials-dev libgsl-dev       # tensors, CVODE reference, roots and quadrature
   libhdf5-dev libtomlplusplus-dev libcli11-dev   # SPH frames, input files, command line
   catch2 libbenchmark-dev                        # tests and micro-benchmarks

@@ -36,10 +36,25 @@ struct WorkPrecisionOptions {
 };
 
 /// Runs the benchmark on `test` (its `increments` is replaced by each count) for one material.
-/// `on_row` is called after each row (for progress output).
+/// `on_row` is called after each row (for progress output). A material without rate equations (a
+/// UMAT plug-in: has_rate_form) runs its own update, labelled "umat", against its self-reference
+/// (self_reference); `notes` then gets the reference's description.
 std::vector<WorkPrecisionRow> work_precision(const std::string& material_name, const Material& material,
                                              PointTest test, const WorkPrecisionOptions& options,
-                                             const std::function<void(const WorkPrecisionRow&)>& on_row = {});
+                                             const std::function<void(const WorkPrecisionRow&)>& on_row = {},
+                                             std::vector<std::string>* notes = nullptr);
+
+/// A model's own solution at fine increments as the reference of its work–precision: the runs at
+/// F/4, F/2 and F increments per leg (F = 4 × `increments`), the observed order of convergence of q
+/// from their differences, p = log2(‖q_{F/4} − q_{F/2}‖∞ / ‖q_{F/2} − q_F‖∞), and Richardson's
+/// extrapolation u* = u_F + (u_F − u_{F/2}) / (2^p − 1) of q and p' (u_F itself where the differences
+/// vanish), at the rows of `increments` per leg (Richardson 1911; Roache 1998, ch. 5).
+struct SelfReference {
+  PointCurve curve;  ///< at `increments` per leg; only q and p are extrapolated
+  int finest = 0;    ///< F
+  double observed_order = 0.0;  ///< NaN where the differences are at round-off (1e-12 of max |q|)
+};
+SelfReference self_reference(const Material& material, PointTest test, int increments);
 
 /// CSV: a '#' comment line (units, definitions), then
 /// material,path,integrator,increments,error_q,error_p,cpu_seconds,repeats.

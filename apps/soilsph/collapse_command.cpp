@@ -100,6 +100,14 @@ std::string integrator_of(const Model& model) {
   }
 }
 
+/// Says which UMAT plug-ins run their calls one at a time (thread_safe = false) on several threads.
+void note_serialised_umats(const sph::Scene& scene, int threads) {
+  for (std::size_t k = 0; k < scene.materials.size(); ++k)
+    if (const auto* umat = std::get_if<UmatModel>(&scene.materials[k]); umat && !umat->params().thread_safe && threads > 1)
+      std::cerr << "note: material " << scene.material_names[k] << ": the UMAT " << umat->params().library
+                << " is not declared thread-safe (thread_safe = false): its calls run one at a time\n";
+}
+
 /// The summary's record of the run: what it is, where it came from, and (after a stop) its figures.
 sph::Summary describe(const sph::Scene& scene, const sph::Collapse& collapse, int threads) {
   sph::Summary s;
@@ -239,6 +247,7 @@ void announce_run(const CollapseOptions& o, const sph::Scene& scene, const sph::
             << (scene.rest.enabled ? " or rest" : "") << " (at most about "
             << sph::human_duration(estimate.seconds) << "), " << tuner.threads() << " thread(s)"
             << (o.threads == "auto" ? " (auto: fewer while they are slower)" : "") << std::endl;
+  note_serialised_umats(scene, tuner.threads());
 }
 
 /// What a run writes into its folder as it goes.

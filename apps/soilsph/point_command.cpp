@@ -33,7 +33,41 @@ struct PointOptions {
   double path_tolerance = 0.0;  ///< driver sub-steps (verification/driver/path_substeps.h); 0: off
   std::string out;
   std::vector<std::string> overrides;
+  std::string tangent;  ///< a umat material's Newton tangent; empty: DDSDDE
 };
+
+bool is_umat(const Material& material) { return std::holds_alternative<UmatModel>(material); }
+
+/// A umat material with the Newton tangent of --tangent; a built-in model refuses the option, and a
+/// umat material refuses --integrator (it runs its own update).
+Material with_tangent_option(const PointOptions& o, const Material& material) {
+  if (!is_umat(material)) {
+    if (!o.tangent.empty())
+      throw ParameterError("--tangent applies to a umat material only (" + std::string(model_name(material)) +
+                           " uses its own consistent or finite-difference tangent)");
+    return material;
+  }
+  if (!o.integrator.empty())
+    throw ParameterError("--integrator " + o.integrator +
+                         ": a umat material runs its own update (no integrator of soilsph's, no CVODE reference)");
+  return with_edited_params(material, [&o](auto& params) {
+    if constexpr (requires { params.tangent; })
+      params.tangent = o.tangent == kUmatTangentNames[1] ? UmatTangent::FiniteDifference : UmatTangent::Ddsdde;
+  });
+}
+
+/// What a umat material's Newton iterations used, for the CSV header and a note on stderr.
+std::string umat_tangent_report(const Material& material) {
+  const auto* umat = std::get_if<UmatModel>(&material);
+  if (!umat) return "";
+  if (umat->params().tangent == UmatTangent::FiniteDifference)
+    return "Newton tangent: central differences of the UMAT's update (--tangent finite-difference)";
+  const long fallbacks = umat->fallback_count();
+  return "Newton tangent: the UMAT's DDSDDE" +
+         (fallbacks == 0 ? std::string()
+                         : "; unusable (not finite or all zero) in " + std::to_string(fallbacks) +
+                               " calls, where central differences of the update were used");
+}
 
 /// The [material] table of the file after the --set overrides, which may only address it.
 Material load_point_material(const PointOptions& o) {
@@ -50,7 +84,7 @@ Material load_point_material(const PointOptions& o) {
   const Material material = blaming_overrides(
       o.overrides, [&] { return read_material(TableReader(*table, o.material_path, "material")); });
   warn_if_rate_dependent(material, o.material_path);
-  return material;
+  return with_tangent_option(o, material);
 }
 
 /// --test and --strain-path resolved: `--test strain-path:FILE` is a shorthand for
@@ -135,9 +169,11 @@ std::vector<std::string> provenance(const PointOptions& o, const std::string& ma
       std::string("soilsph ") + kVersion,
       "command: " + invocation(),
       "material: " + material_source + (o.overrides.empty() ? "" : " with --set") + ": " + describe_material(used),
-      "integrator: " + integrator +
-          (reference ? " (the CVODE reference; the material's integrator key is not used)"
-                     : o.integrator.empty() ? " (the material's integrator key)" : ""),
+      is_umat(material) ? "integrator: the UMAT's own update (" + umat_tangent_report(material) + ")"
+                        : "integrator: " + integrator +
+                              (reference ? " (the CVODE reference; the material's integrator key is not used)"
+                               : o.integrator.empty() ? " (the material's integrator key)"
+                                                      : ""),
       test,
   };
   // Only when used, so that a run without it writes the plain header.
@@ -153,6 +189,8 @@ std::vector<std::string> provenance(const PointOptions& o, const std::string& ma
 
 void write(const PointOptions& o, const verification::PointCurve& curve,
            const std::vector<std::string>& comments) {
+  for (const std::string& line : comments)
+    if (line.find("unusable (not finite or all zero)") != std::string::npos) std::cerr << "note: " << line << '\n';
   if (o.out.empty()) {
     verification::write_point_csv(std::cout, curve, comments);
     return;
@@ -176,7 +214,8 @@ verification::PointCurve run_checked(const PointOptions& o, const Material& mate
     throw ParameterError(e.what());
   } catch (const std::runtime_error& e) {  // a run that failed or lost meaning, at the named increment
     throw std::runtime_error(source + " (" + std::string(model_name(material)) + ", " +
-                             integrator_label(o, integrator) + "): " + e.what());
+                             (is_umat(material) ? std::string("its own update") : integrator_label(o, integrator)) +
+                             "): " + e.what());
   }
 }
 
@@ -186,6 +225,7 @@ void run_programme_file(const PointOptions& o, bool options_given) {
                          " is a programme: --test, --strain-path, --p-initial, --ocr, --strain-max and --increments "
                          "do not apply (its [initial] table and [[leg]] tables say it all)");
   verification::ProgrammeFile file = verification::read_programme_file(o.material_path, o.overrides);
+  file.material = with_tangent_option(o, file.material);
   const std::string integrator = integrator_to_run(o, file.material);
   PointOptions used = o;  // the file's path_tolerance unless --path-tolerance is given; CVODE needs none
   if (o.path_tolerance == 0.0) used.path_tolerance = file.programme.path_tolerance;
@@ -274,6 +314,10 @@ void add_point_command(CLI::App& app) {
                   "triaxial, programme legs) until its step-doubling error estimate is <= this, relative "
                   "(default 0: off, one solve per increment)")
       ->check(in_range(limits::path_tolerance()));
+  cmd->add_option("--tangent", o->tangent,
+                  "a umat material's Newton tangent: ddsdde (the UMAT's, default; central differences where it is "
+                  "unusable, reported) or finite-difference")
+      ->check(CLI::IsMember({std::string(kUmatTangentNames[0]), std::string(kUmatTangentNames[1])}));
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,
                   "override a material key, e.g. --set material.friction_angle=30 (repeatable)");

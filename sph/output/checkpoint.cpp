@@ -1,6 +1,7 @@
 // The checkpoint as one HDF5 file: arrays as datasets, the loop state as attributes of the root.
 #include "sph/output/checkpoint.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <system_error>
@@ -30,6 +31,22 @@ State unpack(const double* in) {
   return s;
 }
 
+/// A UMAT plug-in's variables (State::umat) per soil particle, in the optional dataset "umat_state",
+/// written only when a UMAT has been called: STATEV (kMaxStateVariables), STRAN (6), TIME, KINC.
+constexpr std::size_t kUmatValues = kMaxStateVariables + 8;
+
+void pack_umat(const UmatVariables& u, double* out) {
+  std::copy(u.statev.begin(), u.statev.end(), out);
+  std::copy(u.strain.begin(), u.strain.end(), out + kMaxStateVariables);
+  out[kMaxStateVariables + 6] = u.time, out[kMaxStateVariables + 7] = u.increment;
+}
+
+void unpack_umat(const double* in, UmatVariables& u) {
+  std::copy(in, in + kMaxStateVariables, u.statev.begin());
+  std::copy(in + kMaxStateVariables, in + kMaxStateVariables + 6, u.strain.begin());
+  u.time = in[kMaxStateVariables + 6], u.increment = static_cast<int>(in[kMaxStateVariables + 7]);
+}
+
 /// The loop state's numbers by name, so that writing and reading list them once.
 template <class Loop, class F>
 void for_each_number(Loop& l, F&& f) {
@@ -50,8 +67,9 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
   std::filesystem::path temporary = file;
   temporary += ".tmp";
   const std::size_t n = p.size(), soil = p.soil_count;
-  ensure_room(temporary, 8 * (Particles::kParticleArrays * n + (kStateValues + 8) * soil + 2 * n) +
-                             scene_toml.size() + 64 * 1024);
+  ensure_room(temporary,
+              8 * (Particles::kParticleArrays * n + (kStateValues + kUmatValues + 8) * soil + 2 * n) +
+                  scene_toml.size() + 64 * 1024);
   try {
     const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
     Handle h5(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose,
@@ -71,6 +89,12 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
     for (std::size_t i = 0; i < soil; ++i) pack(p.state[i], &states[kStateValues * i]);
     hdf5::write_dataset(h5, "state", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, soil, kStateValues, states.data(),
                         where);
+    if (std::any_of(p.state.begin(), p.state.end(), [](const State& s) { return s.umat.increment > 0; })) {
+      std::vector<double> umat(kUmatValues * soil);
+      for (std::size_t i = 0; i < soil; ++i) pack_umat(p.state[i].umat, &umat[kUmatValues * i]);
+      hdf5::write_dataset(h5, "umat_state", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, soil, kUmatValues, umat.data(),
+                          where);
+    }
     hdf5::write_dataset(h5, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, soil, 1, p.layer.data(), where);
     hdf5::write_dataset(h5, "boundary_kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, p.boundary_kind.size(), 1,
                         p.boundary_kind.data(), where);
@@ -121,6 +145,11 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   std::vector<double> states(kStateValues * soil);
   hdf5::read_dataset(h5, "state", H5T_NATIVE_DOUBLE, states.size(), states.data(), where);
   for (std::size_t i = 0; i < soil; ++i) c.particles.state[i] = unpack(&states[kStateValues * i]);
+  if (H5Lexists(h5, "umat_state", H5P_DEFAULT) > 0) {
+    std::vector<double> umat(kUmatValues * soil);
+    hdf5::read_dataset(h5, "umat_state", H5T_NATIVE_DOUBLE, umat.size(), umat.data(), where);
+    for (std::size_t i = 0; i < soil; ++i) unpack_umat(&umat[kUmatValues * i], c.particles.state[i].umat);
+  }
   hdf5::read_dataset(h5, "layer", H5T_NATIVE_INT, soil, c.particles.layer.data(), where);
   hdf5::read_dataset(h5, "boundary_kind", H5T_NATIVE_UINT8, c.particles.boundary_kind.size(),
                      c.particles.boundary_kind.data(), where);

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "constitutive/integrators/integrator.h"
+#include "constitutive/models/umat.h"
 #include "constitutive/viscoplastic_relaxation.h"
 #include "sph/particles.h"
 #include "sph/stages/velocity_gradient.h"
@@ -115,7 +116,18 @@ void update_particle_stress(const Model& model, const Model& fallback, Particles
                             const VelocityGradient& L, double dt, StepFailure& failure) {
   try {
     const Mat3 strain = L.strain_increment(dt), spin = L.spin_increment(dt);
-    State next = update_splitting_on_failure(model, fallback, p.state[i], strain, spin, failure);
+    State next;
+    if constexpr (requires { model.update(p.state[i], strain, spin, UmatCall{}); }) {
+      // A UMAT plug-in learns where and when it is called: NOEL the particle (from 1), DTIME the step,
+      // CELENT the particle's spacing √(m/ρ) (plane strain: m per metre of thickness).
+      next = model.update(p.state[i], strain, spin,
+                          UmatCall{.element = static_cast<int>(i) + 1,
+                                   .time_increment = dt,
+                                   .characteristic_length = std::sqrt(p.mass[i] / p.density[i]),
+                                   .coordinates = Vec3(p.x[i], p.y[i], 0.0)});
+    } else {
+      next = update_splitting_on_failure(model, fallback, p.state[i], strain, spin, failure);
+    }
     if constexpr (requires { model.params().viscoplastic_relaxation_time; }) {
       if (const double tau = model.params().viscoplastic_relaxation_time; tau > 0.0)
         next = relax_viscoplastically(model.elasticity(), p.state[i], strain, spin, next, dt / tau);

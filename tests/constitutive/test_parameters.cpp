@@ -84,7 +84,7 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
       {replace(kCamClay, "density = 2000.0\n", ""), "[material] density: is missing"},
       {replace(kCamClay, "model = \"modified-cam-clay\"", "model = \"cam-clay\""),
        "[material] model = \"cam-clay\" is not allowed (allowed: \"linear-elastic\", \"drucker-prager\", "
-       "\"modified-cam-clay\", \"mohr-coulomb\")"},
+       "\"modified-cam-clay\", \"mohr-coulomb\", \"umat\")"},
       {kDruckerPrager + "integrator = \"rk4\"\n", "[material] integrator = \"rk4\" is not allowed"},
       {kCamClay + "elasticity = \"nonlinear\"\n", "[material] elasticity = \"nonlinear\" is not allowed"},
       {kDruckerPrager + "plastic_potential = \"eq20\"\n",

@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "constitutive/models/umat.h"
 #include "constitutive/tangent.h"
 #include "verification/driver/mixed_control_algebra.h"
 #include "verification/driver/path_substeps.h"
@@ -54,6 +55,8 @@ Trial evaluate(const Model& model, const State& state, const Partition& part, co
   t.pore_pressure = pore_pressure;
   try {
     t.state = model.update(state, strain_from_voigt(strain_increment), Mat3::Zero());
+  } catch (const UmatError&) {
+    throw;  // a plug-in's failure is its own, not the trial's: said once, not retried as a bad guess
   } catch (const std::runtime_error& e) {
     t.norm = std::numeric_limits<double>::infinity();
     update_error = e.what();

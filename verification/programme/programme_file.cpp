@@ -59,7 +59,7 @@ double default_lateral_stress_ratio(const Material& material, double ocr) {
           const double sin_phi = std::sin(model.params().friction_angle * std::numbers::pi / 180.0);
           return (1.0 - sin_phi) * std::pow(ocr, sin_phi);
         } else {
-          const double nu = model.params().poisson_ratio;
+          const double nu = model.elasticity().poisson_ratio();  // a UMAT's from its DDSDDE
           return nu / (1.0 - nu);
         }
       },

@@ -466,6 +466,10 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
 
 PointHistory cvode_reference(const Material& material, const State& initial, std::span<const Leg> legs,
                              const CvodeOptions& options) {
+  if (!has_rate_form(material))
+    throw std::invalid_argument(std::string("the CVODE reference integrates a model's rate equations, which a ") +
+                                std::string(model_name(material)) +
+                                " material does not expose (use its own update: an integrator other than cvode)");
   return std::visit([&](const auto& model) { return integrate_legs(model, initial, legs, options); },
                     material);
 }
