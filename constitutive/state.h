@@ -15,6 +15,10 @@ struct State {
   /// dilatancy cut-off (models/dilatancy_cutoff.h), which stops dilating when it reaches the cut-off;
   /// 0 for every other model.
   double plastic_dilation = 0.0;
+  /// Accumulated volumetric strain ∫ tr dε since the initial state, expansion-positive: kept by
+  /// Modified Cam-Clay with hardening_volume = "current" (its specific volume v = v0 (1 + this));
+  /// 0 for every other model.
+  double volumetric_strain = 0.0;
 };
 
 /// Where an updated state lies among the corners of a model's stress space that integrators find
