@@ -74,6 +74,8 @@ Parameters parameters(const ModifiedCamClay& m) {
   out.emplace_back("implicit_tolerance", number(p.implicit_tolerance));
   if (p.minimum_preconsolidation > 0.0)  // absent: none
     out.emplace_back("minimum_preconsolidation", number(p.minimum_preconsolidation));
+  if (p.hardening_volume == HardeningVolume::Current)  // absent: "initial"
+    out.emplace_back("hardening_volume", quoted("current"));
   add_relaxation_time(out, p.viscoplastic_relaxation_time);
   return out;
 }

@@ -34,6 +34,10 @@ struct State {
   /// dilatancy cut-off (models/dilatancy_cutoff.h), which stops dilating when it reaches the cut-off;
   /// 0 for every other model.
   double plastic_dilation = 0.0;
+  /// Accumulated volumetric strain ∫ tr dε since the initial state, expansion-positive: kept by
+  /// Modified Cam-Clay with hardening_volume = "current" (its specific volume v = v0 (1 + this));
+  /// 0 for every other model.
+  double volumetric_strain = 0.0;
   UmatVariables umat;  ///< a UMAT plug-in's state variables, strain and time
 };
 

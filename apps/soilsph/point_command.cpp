@@ -29,7 +29,7 @@ struct PointOptions {
   double ocr = 1.0;
   std::string strain_max = "0.1";  ///< comma-separated targets, checked by list_in_range
   int increments = 100;
-  std::string integrator;  ///< empty: the material's `integrator` key
+  std::string integrator;       ///< empty: the material's `integrator` key
   double path_tolerance = 0.0;  ///< driver sub-steps (verification/driver/path_substeps.h); 0: off
   std::string out;
   std::vector<std::string> overrides;
@@ -141,7 +141,8 @@ std::string integrator_to_run(const PointOptions& o, const Material& material) {
 
 /// How messages and the CSV name the integrator: the option, or the material's key.
 std::string integrator_label(const PointOptions& o, const std::string& integrator) {
-  return o.integrator.empty() ? "integrator " + integrator + " (the material's)" : "--integrator " + integrator;
+  return o.integrator.empty() ? "integrator " + integrator + " (the material's)"
+                              : "--integrator " + integrator;
 }
 
 /// A name given with --integrator (an empty one too: it is not "the material's key").
@@ -202,28 +203,43 @@ void write(const PointOptions& o, const verification::PointCurve& curve,
   if (!file) throw std::runtime_error(o.out + ": write failed");
 }
 
-/// Runs `programme`, turning its failures into the command's errors: input errors (exit 2) and
-/// run failures naming the material, model and integrator (exit 1).
-verification::PointCurve run_checked(const PointOptions& o, const Material& material, const std::string& source,
-                                     const verification::Programme& programme, const std::string& integrator) {
+/// Runs `programme` and writes its curve with the comment lines `comments()`, turning its failures into the
+/// command's errors: input errors (exit 2) and run failures naming the material, model and integrator (exit
+/// 1). A run stopped at the soil's strength writes the curve up to there, the reason its last
+/// comment line, before it fails.
+template <class Comments>
+void run_and_write(const PointOptions& o, const Material& material, const std::string& source,
+                   const verification::Programme& programme, const std::string& integrator,
+                   const Comments& comments) {
+  const auto run_failure = [&](const std::exception& e) {
+    return std::runtime_error(source + " (" + std::string(model_name(material)) + ", " +
+                              (is_umat(material) ? std::string("its own update") : integrator_label(o, integrator)) +
+                              "): " + e.what());
+  };
+  verification::PointCurve curve;
   try {
-    return verification::run_programme(material, programme, integrator);
+    curve = verification::run_programme(material, programme, integrator);
   } catch (const ParameterError&) {
     throw;
   } catch (const std::invalid_argument& e) {  // the test's inputs: out of range, a leg of zero length
     throw ParameterError(e.what());
+  } catch (const verification::StrengthReachedError& e) {
+    std::vector<std::string> lines = comments();
+    lines.push_back(std::string("stopped: ") + e.what());
+    write(o, e.curve, lines);
+    throw run_failure(e);
   } catch (const std::runtime_error& e) {  // a run that failed or lost meaning, at the named increment
-    throw std::runtime_error(source + " (" + std::string(model_name(material)) + ", " +
-                             (is_umat(material) ? std::string("its own update") : integrator_label(o, integrator)) +
-                             "): " + e.what());
+    throw run_failure(e);
   }
+  write(o, curve, comments());
 }
 
 void run_programme_file(const PointOptions& o, bool options_given) {
   if (options_given)
-    throw ParameterError(o.material_path +
-                         " is a programme: --test, --strain-path, --p-initial, --ocr, --strain-max and --increments "
-                         "do not apply (its [initial] table and [[leg]] tables say it all)");
+    throw ParameterError(
+        o.material_path +
+        " is a programme: --test, --strain-path, --p-initial, --ocr, --strain-max and --increments "
+        "do not apply (its [initial] table and [[leg]] tables say it all)");
   verification::ProgrammeFile file = verification::read_programme_file(o.material_path, o.overrides);
   file.material = with_tangent_option(o, file.material);
   const std::string integrator = integrator_to_run(o, file.material);
@@ -231,16 +247,19 @@ void run_programme_file(const PointOptions& o, bool options_given) {
   if (o.path_tolerance == 0.0) used.path_tolerance = file.programme.path_tolerance;
   if (integrator == verification::kReferenceIntegrator) used.path_tolerance = 0.0;
   file.programme.path_tolerance = used.path_tolerance;
-  const verification::PointCurve curve = run_checked(used, file.material, o.material_path, file.programme, integrator);
-  write(used, curve,
-        provenance(used, file.material_source, file.material, integrator, "programme: " + file.description));
+  run_and_write(used, file.material, o.material_path, file.programme, integrator, [&] {
+    return provenance(used, file.material_source, file.material, integrator,
+                      "programme: " + file.description);
+  });
 }
 
 void run(const PointOptions& o, bool legs_given, bool test_options_given) {
   if (o.path_tolerance > 0.0 && o.integrator == verification::kReferenceIntegrator)
-    throw ParameterError("--path-tolerance does not apply to --integrator cvode (the reference holds the "
-                         "imposed stresses throughout)");
-  if (verification::is_programme_file(o.material_path)) return run_programme_file(o, legs_given || test_options_given);
+    throw ParameterError(
+        "--path-tolerance does not apply to --integrator cvode (the reference holds the "
+        "imposed stresses throughout)");
+  if (verification::is_programme_file(o.material_path))
+    return run_programme_file(o, legs_given || test_options_given);
   if (o.test.empty()) {
     parse_toml_file(o.material_path);  // a programme with a syntax error: its file, line and column
     throw ParameterError(o.material_path +
@@ -250,8 +269,9 @@ void run(const PointOptions& o, bool legs_given, bool test_options_given) {
   const verification::PointTest test = point_test(o, legs_given);
   const Material material = load_point_material(o);
   if (test.ocr != 1.0 && !has_preconsolidation(material))
-    throw ParameterError("--ocr " + format_number(test.ocr) + ": OCR applies to " + preconsolidation_models() +
-                         " only (" + std::string(model_name(material)) + " has no preconsolidation pressure)");
+    throw ParameterError("--ocr " + format_number(test.ocr) + ": OCR applies to " +
+                         preconsolidation_models() + " only (" + std::string(model_name(material)) +
+                         " has no preconsolidation pressure)");
   const std::string integrator = integrator_to_run(o, material);
   verification::Programme programme;
   try {
@@ -262,18 +282,18 @@ void run(const PointOptions& o, bool legs_given, bool test_options_given) {
     if (test.path == verification::LoadPath::StrainPath) throw ParameterError(e.what());
     throw ParameterError("--strain-max " + o.strain_max + ": " + e.what());
   }
-  const verification::PointCurve curve = run_checked(o, material, o.material_path, programme, integrator);
-  write(o, curve,
-        provenance(o, o.material_path, material, integrator,
-                   "test: " + describe_test(test, test_and_strain_path(o).second)));
+  run_and_write(o, material, o.material_path, programme, integrator, [&] {
+    return provenance(o, o.material_path, material, integrator,
+                      "test: " + describe_test(test, test_and_strain_path(o).second));
+  });
 }
 
 }  // namespace
 
 void add_point_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "point",
-      "Run a material-point test (triaxial, oedometer, isotropic, strain path) or a programme file; write its CSV");
+  auto* cmd = app.add_subcommand("point",
+                                 "Run a material-point test (triaxial, oedometer, isotropic, strain path) or "
+                                 "a programme file; write its CSV");
   auto o = std::make_shared<PointOptions>();
   cmd->add_option("FILE", o->material_path,
                   "a programme file ([initial] and [[leg]] tables; soilsph examples lists the shipped ones), or a "
@@ -283,9 +303,11 @@ void add_point_command(CLI::App& app) {
   auto* test = cmd->add_option("--test", o->test,
                                "triaxial-drained, triaxial-undrained, oedometer, isotropic, or strain-path "
                                "(with --strain-path FILE, or as strain-path:FILE); not with a programme");
-  auto* strain_path = cmd->add_option("--strain-path", o->strain_path,
-                  "CSV of strain increments d_xx,d_yy,d_zz,d_xy,d_yz,d_xz (tension-positive), one per row")
-      ->check(CLI::ExistingFile);
+  auto* strain_path =
+      cmd->add_option(
+             "--strain-path", o->strain_path,
+             "CSV of strain increments d_xx,d_yy,d_zz,d_xy,d_yz,d_xz (tension-positive), one per row")
+          ->check(CLI::ExistingFile);
   auto* p_initial = cmd->add_option("--p-initial", o->p_initial,
                                     "initial isotropic effective stress, compression-positive, with a unit "
                                     "(100kPa, 0.1MPa) or in Pa")

@@ -2,6 +2,7 @@
 
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "constitutive/derived_constants.h"
 #include "constitutive/integrators/integrate.h"
@@ -11,7 +12,8 @@
 namespace soilsph {
 
 namespace {
-constexpr Elasticity::Kind kElasticityKinds[] = {Elasticity::Kind::Constant, Elasticity::Kind::PressureDependent};
+constexpr Elasticity::Kind kElasticityKinds[] = {Elasticity::Kind::Constant,
+                                                 Elasticity::Kind::PressureDependent};
 constexpr std::string_view kElasticityNames[] = {"constant", "pressure-dependent"};
 }  // namespace
 
@@ -37,12 +39,16 @@ void ModifiedCamClayParams::fields(const Io& io) {
   // Below 1e-12 (as substep_tolerance) the error control cannot be met in double precision and
   // splits every plastic update into its 10 000 sub-increments (an input-fuzzer finding: 1e-30).
   io.number_or("implicit_tolerance", implicit_tolerance, Range::zero_or_closed(1e-12, 1e-2));
-  io.number_or("minimum_preconsolidation", minimum_preconsolidation, Range::closed(0.0, limits::kMaxStress), "Pa");
+  io.number_or("minimum_preconsolidation", minimum_preconsolidation, Range::closed(0.0, limits::kMaxStress),
+               "Pa");
+  io.choice_or("hardening_volume", hardening_volume, kHardeningVolumeNames, kHardeningVolumes);
   io.number_or("viscoplastic_relaxation_time", viscoplastic_relaxation_time, limits::relaxation_time_range(),
                "s");
 }
 
-ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) { return read_fields<ModifiedCamClayParams>(t); }
+ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
+  return read_fields<ModifiedCamClayParams>(t);
+}
 
 namespace {
 Elasticity make_elasticity(const ModifiedCamClayParams& p) {
@@ -59,9 +65,10 @@ ModifiedCamClay::ModifiedCamClay(const Params& params)
       theta_((1.0 + params.initial_void_ratio) / (params.compression_index - params.swelling_index)) {
   const double sin_phi = std::sin(params.friction_angle * std::numbers::pi / 180.0);
   M_ = 6.0 * sin_phi / (3.0 - sin_phi);  // eq 26
-  require_derived(kName, "friction_angle", params.friction_angle, "M = 6 sin(phi)/(3 - sin(phi)) (eq 26)", M_, "");
-  require_derived(kName, "initial_void_ratio", params.initial_void_ratio, "(1+e0)/(lambda-kappa) (eq 27)", theta_,
+  require_derived(kName, "friction_angle", params.friction_angle, "M = 6 sin(phi)/(3 - sin(phi)) (eq 26)", M_,
                   "");
+  require_derived(kName, "initial_void_ratio", params.initial_void_ratio, "(1+e0)/(lambda-kappa) (eq 27)",
+                  theta_, "");
   if (params.elasticity == Elasticity::Kind::Constant) {
     require_constant_moduli(kName, params.young_modulus, elasticity_);
     return;
@@ -71,8 +78,8 @@ ModifiedCamClay::ModifiedCamClay(const Params& params)
   const Moduli D = elasticity_.at(0.0);
   require_derived(kName, "swelling_index", params.swelling_index,
                   "K = p_floor (1+e0)/kappa at the elastic_pressure_floor", D.K, "Pa");
-  require_derived(kName, "elastic_pressure_floor", params.elastic_pressure_floor, "G = 3K(1-2 nu)/(2(1+nu))", D.G,
-                  "Pa");
+  require_derived(kName, "elastic_pressure_floor", params.elastic_pressure_floor, "G = 3K(1-2 nu)/(2(1+nu))",
+                  D.G, "Pa");
 }
 
 double ModifiedCamClay::yield(const Mat3& sigma, double pc) const {
@@ -131,9 +138,28 @@ Mat3 ModifiedCamClay::correct(const Mat3& sigma, double pc) const {
   return t * s + isotropic_stress(half + t * (p - half));
 }
 
+ModifiedCamClay ModifiedCamClay::hardening_at(double volumetric_strain) const {
+  ModifiedCamClay at = *this;
+  if (!hardens_with_current_volume()) return at;
+  const double v = (1.0 + params_.initial_void_ratio) * (1.0 + volumetric_strain);  // v − v0 = v0 ε_v
+  if (!(v > 0.0))
+    throw std::runtime_error(
+        "modified-cam-clay: the specific volume v = (1+e0)(1 + eps_v) = " + format_number(v) +
+        " is not positive (hardening_volume = \"current\", eps_v = " + format_number(volumetric_strain) +
+        ")");
+  at.theta_ = v / (params_.compression_index - params_.swelling_index);
+  return at;
+}
+
 State ModifiedCamClay::update(const State& state, const Mat3& strain_increment,
                               const Mat3& spin_increment) const {
-  return integrate(*this, state, strain_increment, spin_increment);
+  if (!hardens_with_current_volume()) return integrate(*this, state, strain_increment, spin_increment);
+  // The volume at the increment's end, known before the return: one exponent for the whole
+  // increment, exact as the increment shrinks.
+  const double volumetric_strain = state.volumetric_strain + strain_increment.trace();
+  State next = integrate(hardening_at(volumetric_strain), state, strain_increment, spin_increment);
+  next.volumetric_strain = volumetric_strain;
+  return next;
 }
 
 Mat6 ModifiedCamClay::consistent_tangent(const State& state, const Mat3& strain_increment) const {
@@ -144,7 +170,8 @@ Mat6 ModifiedCamClay::consistent_tangent(const State& state, const Mat3& strain_
   // mixed-control driver a third of its updates and left the tangent unchanged.
   if (integrator() == Integrator::Explicit) return finite_difference_tangent(*this, state, strain_increment);
   Mat6 tangent;
-  implicit_return(*this, state, strain_increment, &tangent);
+  implicit_return(hardening_at(state.volumetric_strain + strain_increment.trace()), state, strain_increment,
+                  &tangent);
   return tangent;
 }
 

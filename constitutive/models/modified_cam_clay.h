@@ -4,7 +4,9 @@
 ///   yield      f = M²p² + q² − M² p p_c                                    (eq 24)
 ///   slope      M = 6 sinφ / (3 − sinφ)  (triaxial compression, used at every Lode angle)  (eq 26)
 ///   hardening  p_c = p_c0 exp[(1+e0)/(λ−κ) · ε_v^p], ε_v^p compression-positive   (eq 27)
-///              softening no further than p_c,min (`minimum_preconsolidation`, default 0: none)
+///              softening no further than p_c,min (`minimum_preconsolidation`, default 0: none);
+///              with hardening_volume = "current", dp_c/p_c = v/(λ−κ) dε_v^p with the current
+///              specific volume v = (1+e0)(1 + ε_v) (ε_v the total volumetric strain, tension-positive)
 /// The paper writes eq 27 for compression-positive ε_v^p while its stresses are tension-positive
 /// (paper-notes): the flow rule's plastic volume is negated before it enters the hardening law.
 #include <algorithm>
@@ -20,6 +22,18 @@
 
 namespace soilsph {
 
+/// The specific volume v in the hardening law's exponent v/(λ−κ) (eq 27).
+enum class HardeningVolume {
+  Initial,  ///< v0 = 1 + e0 throughout: eq 27 as printed
+  /// v = v0 (1 + ε_v) from the total volumetric strain ε_v (tension-positive) since the initial
+  /// state, the linear kinematic relation v − v0 = v0 ε_V of OpenGeoSys's ModCamClay; taken at each
+  /// increment's end (the strain there is known before the return), so every integrator, the CVODE
+  /// reference (at each instant) and the SPH solver (through the model's update) follow it.
+  Current,
+};
+inline constexpr HardeningVolume kHardeningVolumes[] = {HardeningVolume::Initial, HardeningVolume::Current};
+inline constexpr std::string_view kHardeningVolumeNames[] = {"initial", "current"};
+
 /// The parameters, with the defaults of an input file: a struct built in code runs as the same TOML
 /// with the required keys given (the model's constructor checks every range).
 struct ModifiedCamClayParams {
@@ -28,12 +42,12 @@ struct ModifiedCamClayParams {
   /// cost per update that does not grow with the increment (docs/method/integrators.md).
   static constexpr Integrator kDefaultIntegrator = Integrator::Implicit;
   static constexpr double kDefaultImplicitAlpha = 0.5;
-  double density = 0.0;               ///< kg/m³ (required)
-  double poisson_ratio = 0.0;         ///< − (required)
-  double friction_angle = 0.0;        ///< φ, degrees (gives M, eq 26) (required)
-  double compression_index = 0.0;     ///< λ, slope of the NCL in e–ln p (required)
-  double swelling_index = 0.0;        ///< κ, slope of the swelling line in e–ln p (required)
-  double initial_void_ratio = 0.0;    ///< e0 (required)
+  double density = 0.0;             ///< kg/m³ (required)
+  double poisson_ratio = 0.0;       ///< − (required)
+  double friction_angle = 0.0;      ///< φ, degrees (gives M, eq 26) (required)
+  double compression_index = 0.0;   ///< λ, slope of the NCL in e–ln p (required)
+  double swelling_index = 0.0;      ///< κ, slope of the swelling line in e–ln p (required)
+  double initial_void_ratio = 0.0;  ///< e0 (required)
   /// "constant" (E, ν) or "pressure-dependent" (K = (1+e0)p/κ)
   Elasticity::Kind elasticity = Elasticity::Kind::PressureDependent;
   double young_modulus = 0.0;             ///< Pa, constant elasticity only (then required)
@@ -50,6 +64,8 @@ struct ModifiedCamClayParams {
   /// ratio on the normal compression line, e = e_N − λ ln p_c,min); 0 (the default): none, eq 27 as
   /// printed. Compression still hardens from it. See hardening_exponent_at().
   double minimum_preconsolidation = 0.0;
+  /// The specific volume of the hardening law: "initial" (default, eq 27) or "current".
+  HardeningVolume hardening_volume = HardeningVolume::Initial;
   /// τ, s: Duvaut–Lions relaxation time in the SPH solver (constitutive/viscoplastic_relaxation.h); 0:
   /// rate-independent, as the paper.
   double viscoplastic_relaxation_time = 0.0;
@@ -74,8 +90,15 @@ class ModifiedCamClay {
   double implicit_alpha() const { return params_.implicit_alpha; }
   double implicit_tolerance() const { return params_.implicit_tolerance; }
   double M() const { return M_; }
-  /// (1+e0)/(λ−κ): the hardening exponent per unit plastic volumetric strain (eq 27).
+  /// (1+e0)/(λ−κ): the hardening exponent per unit plastic volumetric strain (eq 27); v/(λ−κ) with
+  /// the current specific volume in the model hardening_at() returns.
   double hardening_exponent() const { return theta_; }
+  /// Whether the hardening follows the current specific volume (hardening_volume = "current").
+  bool hardens_with_current_volume() const { return params_.hardening_volume == HardeningVolume::Current; }
+  /// The model whose hardening exponent is v/(λ−κ) at the total volumetric strain `volumetric_strain`
+  /// (tension-positive), v = (1+e0)(1 + ε_v); itself when the hardening uses the initial volume.
+  /// Throws std::runtime_error where v ≤ 0 (a compression beyond the whole volume).
+  ModifiedCamClay hardening_at(double volumetric_strain) const;
   /// p_c,min: softening stops there (0: never).
   double minimum_preconsolidation() const { return params_.minimum_preconsolidation; }
   /// The exponent that applies at p_c for a plastic volume change of the sign of `compaction`

@@ -15,19 +15,23 @@ namespace {
 using hdf5::Handle;
 
 /// Format 2 dropped format 1's accumulated plastic strain tensor (no longer part of State); format 3
-/// added the plastic dilation (the dilatancy cut-off's state).
-constexpr const char* kFormat = "soilsph checkpoint 3";
-constexpr std::size_t kStateValues = 13;  ///< per soil particle: σ (9), p_c, ε^p_s, Δλ, ε^p_v
+/// added the plastic dilation (the dilatancy cut-off's state); format 4 the volumetric strain (MCC's
+/// current specific volume).
+constexpr const char* kFormat = "soilsph checkpoint 4";
+constexpr std::size_t kStateValues = 14;  ///< per soil particle: σ (9), p_c, ε^p_s, Δλ, ε^p_v, ε_v
 
 void pack(const State& s, double* out) {
   for (int k = 0; k < 9; ++k) out[k] = s.stress(k / 3, k % 3);
-  out[9] = s.pc, out[10] = s.plastic_shear_strain, out[11] = s.plastic_multiplier, out[12] = s.plastic_dilation;
+  out[9] = s.pc, out[10] = s.plastic_shear_strain, out[11] = s.plastic_multiplier,
+  out[12] = s.plastic_dilation;
+  out[13] = s.volumetric_strain;
 }
 
 State unpack(const double* in) {
   State s;
   for (int k = 0; k < 9; ++k) s.stress(k / 3, k % 3) = in[k];
   s.pc = in[9], s.plastic_shear_strain = in[10], s.plastic_multiplier = in[11], s.plastic_dilation = in[12];
+  s.volumetric_strain = in[13];
   return s;
 }
 

@@ -291,7 +291,7 @@ TEST_CASE("resuming refuses a checkpoint of another format, naming both", "[faul
   const auto r = run_child(resume(dir), dir / "resume-log.txt");
   CHECK(r.exit_status != 0);
   CHECK_THAT(r.log,
-             Contains("is not a soilsph checkpoint of this version (format \"soilsph checkpoint 3\", the "
+             Contains("is not a soilsph checkpoint of this version (format \"soilsph checkpoint 4\", the "
                       "file's is \"soilsph checkpoint 1\"): rerun the scene"));
 }
 

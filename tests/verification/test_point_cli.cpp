@@ -314,7 +314,8 @@ TEST_CASE("soilsph point --path-tolerance: recorded in the header, one row per i
   TempDir dir;
   const fs::path out = dir.path / "curve.csv", log = dir.path / "log";
   const std::string material = kSource + "/data/materials/mcc-table1.toml";
-  const std::string base = material + " --test triaxial-drained --strain-max 0.02 --increments 4 --integrator implicit";
+  const std::string base =
+      material + " --test triaxial-drained --strain-max 0.02 --increments 4 --integrator implicit";
   REQUIRE(point(base + " --path-tolerance 1e-5 --out " + out.string(), log) == 0);
   const std::string csv = read(out);
   CHECK(csv.find("\n# driver sub-steps: path_tolerance = 0.00001 (") != std::string::npos);
@@ -327,7 +328,37 @@ TEST_CASE("soilsph point --path-tolerance: recorded in the header, one row per i
   REQUIRE(point(base + " --out " + out.string(), log) == 0);
   CHECK(read(out).find("sub-steps") == std::string::npos);
   CHECK(point(base + " --path-tolerance 0.5", log) == 2);
-  CHECK(read(log).find("--path-tolerance: 0.5 is out of range (allowed: 1e-12 <= value <= 0.01)") != std::string::npos);
+  CHECK(read(log).find("--path-tolerance: 0.5 is out of range (allowed: 1e-12 <= value <= 0.01)") !=
+        std::string::npos);
   CHECK(point(material + " --test triaxial-drained --integrator cvode --path-tolerance 1e-4", log) == 2);
   CHECK(read(log).find("--path-tolerance does not apply to --integrator cvode") != std::string::npos);
+}
+
+TEST_CASE("soilsph point: a stress leg past the strength writes the curve up to there and says why",
+          "[cli]") {
+  // D-P (Table 1, φ = 30°), drained from p' = 100 kPa: σ_a raised to 500 kPa with σ_r held, past the
+  // strength σ_a = 100 kPa · (1 + q_f/σ_r) that the failure line gives (about 300 kPa).
+  TempDir dir;
+  const fs::path programme = dir.path / "past-strength.toml";
+  std::ofstream(programme) << "material = \"" << kSource << "/data/materials/dp-table1.toml\"\n"
+                           << "[initial]\np = 100e3\n"
+                           << "[[leg]]\nname = \"drained to 500 kPa\"\nincrements = 40\n"
+                           << "stress = { xx = 500e3, yy = \"hold\", zz = \"hold\" }\n";
+  const fs::path out = dir.path / "curve.csv";
+  CHECK(point(programme.string() + " --set material.friction_angle=30 --out " + out.string(),
+              dir.path / "log") == 1);
+  const std::string log = read(dir.path / "log");
+  INFO(log);
+  CHECK(log.find("at or beyond the soil's strength") != std::string::npos);
+  CHECK(log.find("drained to 500 kPa") != std::string::npos);
+  CHECK(log.find("more increments may help") == std::string::npos);
+  const std::string csv = read(out);
+  CHECK(csv.find("\n# stopped: ") != std::string::npos);
+  // The header line and the rows up to the last completed increment: fewer than 1 + 40.
+  std::size_t rows = 0;
+  std::istringstream lines(csv);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line[0] != '#' && line.rfind("eps_a", 0) != 0) ++rows;
+  CHECK(rows > 1);
+  CHECK(rows < 41);
 }

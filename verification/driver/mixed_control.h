@@ -10,6 +10,7 @@
 /// tangent, else central differences), until ‖r‖∞ ≤ tolerance · max(‖σ_f*‖∞, 10⁻³ ‖σ‖∞) (relative to
 /// the imposed stresses; the floor covers imposed zero stresses). The first guess is the elastic
 /// solution at σ_n. Templated on the model: called once per run from a std::visit.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -22,6 +23,7 @@
 #include "verification/driver/mixed_control_algebra.h"
 #include "verification/driver/path_substeps.h"
 #include "verification/driver/point_history.h"
+#include "verification/driver/strength_limit.h"
 
 namespace soilsph::verification {
 
@@ -133,8 +135,8 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
   }
   std::string update_error;
   for (bool damped : {false, true}) {
-    if (auto solved = detail::solve_increment(model, state, pore_pressure, part, leg, target, strain_increment,
-                                              options, damped, update_error)) {
+    if (auto solved = detail::solve_increment(model, state, pore_pressure, part, leg, target,
+                                              strain_increment, options, damped, update_error)) {
       pore_pressure = solved->pore_pressure;
       return solved->state;
     }
@@ -160,7 +162,8 @@ State mixed_control_increment(const Model& model, const State& state, const Leg&
 }
 
 /// Runs every leg from `initial`: one sample per increment, the initial state first; a failed
-/// increment throws IncrementError. With options.path_tolerance > 0 an increment of a leg with
+/// increment throws IncrementError, which holds the samples completed when the failure is the soil's
+/// strength (strength_limit.h). With options.path_tolerance > 0 an increment of a leg with
 /// stress-imposed components is done in error-controlled sub-steps (path_substeps.h), still one
 /// sample per increment. The imposed
 /// stresses are accumulated as targets (not added to the last solved stress), so the residuals
@@ -171,6 +174,13 @@ PointHistory drive_mixed_control(const Model& model, const State& initial, std::
   PointHistory history{{Mat3::Zero(), initial}};
   const auto solve = [&](const State& from, const Leg& sub, const Vec6& sub_target, Vec6& d, double& u) {
     return mixed_control_increment(model, from, sub, sub_target, d, u, options);
+  };
+  // The strength's bisection (strength_limit.h) tries parts of an increment that mostly fail: with
+  // two splits at most a failing trial costs 4 Newton solves, not 2^max_splits.
+  MixedControlOptions probe_options = options;
+  probe_options.max_splits = std::min(options.max_splits, 2);
+  const auto probe = [&](const State& from, const Leg& sub, const Vec6& sub_target, Vec6& d, double& u) {
+    return mixed_control_increment(model, from, sub, sub_target, d, u, probe_options);
   };
   Vec6 target = stress_to_voigt(initial.stress);
   std::array<bool, 6> held{};
@@ -183,6 +193,7 @@ PointHistory drive_mixed_control(const Model& model, const State& initial, std::
     was_undrained = leg.undrained;
     const bool path_control = options.path_tolerance > 0.0 && Partition(leg).n_free > 0;
     PathSubsteps substeps;  // each leg starts from one sub-step pair (1, 2)
+    const Mat3 leg_start_strain = history.back().strain;
     for (int k = 0; k < leg.increments; ++k) {
       const PointSample& last = history.back();
       double u = leg.undrained ? last.pore_pressure : 0.0;
@@ -196,12 +207,19 @@ PointHistory drive_mixed_control(const Model& model, const State& initial, std::
       held = leg.stress_imposed;
       Vec6 strain_increment;
       try {
-        State next = path_control
-                         ? path_controlled_increment(solve, last.state, leg, target, options.path_tolerance,
-                                                     options.max_path_substeps, substeps, strain_increment, u)
-                         : mixed_control_increment(model, last.state, leg, target, strain_increment, u, options);
+        State next =
+            path_control
+                ? path_controlled_increment(
+                      solve, last.state, strain_to_voigt(last.strain - leg_start_strain), leg, target,
+                      options.path_tolerance, options.max_path_substeps, substeps, strain_increment, u)
+                : mixed_control_increment(model, last.state, leg, target, strain_increment, u, options);
         history.push_back({last.strain + strain_from_voigt(strain_increment), next, u});
       } catch (const std::runtime_error& e) {
+        // An increment with imposed stresses that cannot be solved: the soil's strength, if the
+        // furthest state it reaches lies on the yield surface (strength_limit.h).
+        if (Partition(leg).n_free > 0)
+          if (const auto reached = strength_reached(model, probe, last.state, u, leg, target))
+            throw IncrementError(strength_message(*reached), l, k, std::move(history));
         throw IncrementError(e.what(), l, k);
       }
     }

@@ -58,8 +58,15 @@ std::string lost_meaning(const PointSample& sample) {
 
 std::string describe(const Programme& programme, std::size_t leg, int increment) {
   if (programme.legs_are_rows) return programme.leg_names[leg];
-  return "increment " + std::to_string(increment + 1) + " of " + std::to_string(programme.legs[leg].increments) +
-         " of " + programme.leg_names[leg];
+  return "increment " + std::to_string(increment + 1) + " of " +
+         std::to_string(programme.legs[leg].increments) + " of " + programme.leg_names[leg];
+}
+
+PointCurve curve_of(const PointHistory& history) {
+  PointCurve curve;
+  curve.reserve(history.size());
+  for (const PointSample& sample : history) curve.push_back(to_record(sample));
+  return curve;
 }
 
 /// Throws, naming the increment, at the first sample of `history` that has lost meaning.
@@ -89,10 +96,11 @@ Programme programme_of(const Material& material, const PointTest& test) {
   programme.legs_are_rows = test.path == LoadPath::StrainPath;
   if (!(test.path_tolerance == 0.0 || point_limits::path_tolerance().contains(test.path_tolerance)))
     throw std::invalid_argument("path_tolerance = " + format_number(test.path_tolerance) +
-                                " is out of range (allowed: 0 (off) or " + point_limits::path_tolerance().describe() +
-                                ")");
+                                " is out of range (allowed: 0 (off) or " +
+                                point_limits::path_tolerance().describe() + ")");
   programme.path_tolerance = test.path_tolerance;
-  for (std::size_t l = 0; l < programme.legs.size(); ++l) programme.leg_names.push_back(describe_leg(test, l));
+  for (std::size_t l = 0; l < programme.legs.size(); ++l)
+    programme.leg_names.push_back(describe_leg(test, l));
   return programme;
 }
 
@@ -106,17 +114,19 @@ PointCurve run_programme(const Material& material, const Programme& programme, s
       MixedControlOptions options;
       options.path_tolerance = programme.path_tolerance;
       history = std::visit(
-          [&](const auto& model) { return drive_mixed_control(model, programme.initial, programme.legs, options); },
+          [&](const auto& model) {
+            return drive_mixed_control(model, programme.initial, programme.legs, options);
+          },
           chosen);
     }
   } catch (const IncrementError& e) {
-    throw std::runtime_error(describe(programme, e.leg, e.increment) + ": " + e.reason);
+    const std::string message = describe(programme, e.leg, e.increment) + ": " + e.reason;
+    if (e.completed.empty()) throw std::runtime_error(message);
+    check_meaning(e.completed, programme);
+    throw StrengthReachedError(message, curve_of(e.completed));
   }
   check_meaning(history, programme);
-  PointCurve curve;
-  curve.reserve(history.size());
-  for (const PointSample& sample : history) curve.push_back(to_record(sample));
-  return curve;
+  return curve_of(history);
 }
 
 }  // namespace soilsph::verification

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -60,6 +62,15 @@ bool is_active(unsigned active, int k) {
   return (active >> k) & 1u;
 }
 
+/// The branch that holds the stress at the apex of a pyramid (Mohr–Coulomb's, or the tension
+/// cut-off's corner σ = T I): σ̇ = 0 and every strain rate plastic. At a hydrostatic stress the
+/// principal directions, and with them the planes' gradients, are undefined, so Koiter's rule
+/// cannot choose among the planes there (CVODE stalled on them); where the model's own return of a
+/// step of the leg's loading stays at the apex (held_apex), the apex is the whole answer: the
+/// stress is fixed by the corner, the plastic flow takes the imposed strain rate. Its bit lies
+/// above every surface's.
+constexpr unsigned kApexBranch = 1u << 31;
+
 /// The rates at (σ, p_c) with plastic dilation d and the surfaces of the bit set `active` flowing
 /// (yield_surfaces.h): the model that flows there (ψ = 0 past a dilatancy cut-off) gives them.
 template <class Model>
@@ -70,7 +81,12 @@ Rates rates(const Model& given, const Leg& leg, const Partition& part, const Vec
   const Moduli D = model.elasticity().at(mean_pressure(sigma));
   Mat6 C = voigt_stiffness(D);
   Rates r;
-  r.strain = leg.increment;  // imposed strain rates per unit pseudo-time (one increment)
+  r.strain = leg.increment;     // imposed strain rates per unit pseudo-time (one increment)
+  if (active == kApexBranch) {  // a strain-controlled leg only (held_apex): σ̇ = 0, ε̇^p = ε̇
+    r.plastic_strain = strain_from_voigt(r.strain);
+    r.dilation = r.plastic_strain.trace();
+    return r;
+  }
   if constexpr (kPlastic<Model>) {
     if (active != 0) {
       using Columns = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxSurfaces>;
@@ -134,11 +150,40 @@ Rates rates(const Model& given, const Leg& leg, const Partition& part, const Vec
 /// calls e1, so the rates would jump as round-off swaps e1 and e2. The set taken is then the one
 /// of least plastic strain rate ‖ε̇^p‖ (the symmetric split, as solve_free takes the least-norm
 /// strain), the smaller set on a tie.
+/// The apex stress, if the stress lies at an apex (hydrostatic and on the yield surface, to 1e-6
+/// of the stress scale: CVODE locates the corner to its tolerances) that the leg's loading keeps it
+/// at: the leg imposes every strain, and the model's own return of a short step of it (a thousandth
+/// of an increment) from there ends at a hydrostatic stress as close.
+template <class Model>
+std::optional<Mat3> held_apex(const Model& model, const Leg& leg, const Partition& part, const Mat3& sigma,
+                              double pc, double d, double tolerance) {
+  if constexpr (!HasPlanes<Model>) {
+    return std::nullopt;
+  } else {
+    constexpr double kProbe = 1e-3, kNear = 1e-6;
+    if (part.n_free != 0 || model.normalized_yield(sigma, pc) < -tolerance) return std::nullopt;
+    const Mat3 step = kProbe * strain_from_voigt(leg.increment);
+    const double trial_change =
+        model.elasticity().at(mean_pressure(sigma)).stiffness(step).cwiseAbs().maxCoeff();
+    const double near = kNear * std::max({sigma.cwiseAbs().maxCoeff(), trial_change, 1.0});
+    if (deviator(sigma).cwiseAbs().maxCoeff() > near) return std::nullopt;
+    State start;
+    start.stress = sigma;
+    start.pc = pc;
+    start.plastic_dilation = d;
+    const Mat3 apex = model.update(start, step, Mat3::Zero()).stress;
+    if (deviator(apex).cwiseAbs().maxCoeff() > 1e-3 * near || (apex - sigma).cwiseAbs().maxCoeff() > near)
+      return std::nullopt;
+    return apex;
+  }
+}
+
 template <class Model>
 unsigned koiter_set(const Model& model, const Leg& leg, const Partition& part, const Vec6& stress, double pc,
                     double d, double tolerance, unsigned leaving) {
   constexpr double kTie = 1e-10;
   const Mat3 sigma = stress_from_voigt(stress);
+  if (held_apex(model, leg, part, sigma, pc, d, tolerance)) return kApexBranch;
   const Surfaces surface = surfaces(flowing_model(model, d), sigma, pc);
   unsigned on = 0;
   for (int k = 0; k < surface_count(model); ++k)
@@ -182,7 +227,20 @@ struct Problem {
   Partition part;
   unsigned active = 0;
   std::string last_error;
+  double initial_volumetric_strain = 0.0;  ///< tr ε of the initial state, to which the ODE's strain adds
 };
+
+/// The model at the ODE state y: for one whose hardening follows the current specific volume (MCC
+/// with hardening_volume = "current", ModifiedCamClay::hardening_at), the model at y's total
+/// volumetric strain; the model itself otherwise.
+template <class Model>
+Model model_at(const Problem<Model>& problem, const double* y) {
+  if constexpr (requires { problem.model->hardening_at(0.0); })
+    return problem.model->hardening_at(problem.initial_volumetric_strain + y[kStrain] + y[kStrain + 1] +
+                                       y[kStrain + 2]);
+  else
+    return *problem.model;
+}
 
 Vec6 stress_of(const double* y) {
   return Eigen::Map<const Vec6>(y);
@@ -192,7 +250,7 @@ template <class Model>
 int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   auto& problem = *static_cast<Problem<Model>*>(data);
   const double* v = N_VGetArrayPointer(y);
-  const Rates r = rates(*problem.model, *problem.leg, problem.part, stress_of(v), v[kPc],
+  const Rates r = rates(model_at(problem, v), *problem.leg, problem.part, stress_of(v), v[kPc],
                         dilation_of(*problem.model, v), problem.active);
   if (!r.defined) {
     problem.last_error = std::popcount(problem.active) > 1
@@ -239,17 +297,19 @@ double softening_bound(const Model& model) {
 template <class Model>
 int switching_function(sunrealtype, N_Vector y, sunrealtype* g, void* data) {
   auto& problem = *static_cast<Problem<Model>*>(data);
-  const Model& model = *problem.model;
   const double* v = N_VGetArrayPointer(y);
+  const Model model = model_at(problem, v);
   const int n = surface_count(model);
   const unsigned all = (1u << n) - 1u;
   const double d = dilation_of(model, v);
-  if (problem.active != 0) {
+  if (problem.active == kApexBranch) {  // held for the rest of the leg: no surface switches
+    for (int k = 0; k < n; ++k) g[k] = 1.0;
+  } else if (problem.active != 0) {
     const Rates r = rates(model, *problem.leg, problem.part, stress_of(v), v[kPc], d, problem.active);
     for (int k = 0; k < n; ++k)
       if (is_active(problem.active, k)) g[k] = r.multipliers[k];
   }
-  if (problem.active != all) {
+  if (problem.active != all && problem.active != kApexBranch) {
     const auto values = surface_values(flowing_model(model, d), stress_from_voigt(stress_of(v)), v[kPc]);
     for (int k = 0; k < n; ++k)
       if (!is_active(problem.active, k)) g[k] = values[k];
@@ -354,16 +414,21 @@ unsigned active_at_root(const Model& model, const Leg& leg, const Partition& par
   }
 }
 
-template <class Model>
-PointHistory integrate_legs(const Model& model, const State& initial, std::span<const Leg> legs,
-                            const CvodeOptions& options) {
-  PointHistory history{{Mat3::Zero(), initial}};
-  if (legs.empty()) return history;
-  Problem<Model> problem{&model, &legs[0], Partition(legs[0]), 0, {}};
-  const int n = surface_count(model);  // the switching functions: n surfaces, softening bound, dilation
+/// The root directions and CVODE's root information for the n surfaces and the two bounds.
+struct Roots {
   std::array<int, kMaxSurfaces + 2> directions{}, found{};
-  const std::span<int> directions_used(directions.data(), n + 2), found_used(found.data(), n + 2);
-  Solver s;
+  int n = 0;  ///< surfaces
+  std::span<int> directions_used() { return {directions.data(), static_cast<std::size_t>(n + 2)}; }
+  std::span<const int> found_used() const { return {found.data(), static_cast<std::size_t>(n + 2)}; }
+};
+
+/// Creates the CVODE objects of a run in `s` for `problem`, from `initial`: BDF with a dense
+/// linear solver, absolute tolerances scaled to the stress level of the test, and the switching
+/// functions (`roots.n` surfaces and two bounds).
+template <class Model>
+void open_solver(Solver& s, Problem<Model>& problem, const State& initial, const CvodeOptions& options,
+                 const Roots& roots) {
+  const Model& model = *problem.model;
   if (SUNContext_Create(nullptr, &s.context) != 0) throw std::runtime_error("cvode reference: no SUNContext");
   const int size = ode_size(model);
   s.y = N_VNew_Serial(size, s.context);
@@ -375,8 +440,12 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   y[kPc] = initial.pc;
   y[kPorePressure] = 0.0;
   if (limits_dilation(model)) y[kDilation] = initial.plastic_dilation;
-  // Absolute tolerances scaled to the stress level of the test.
-  const double stress_scale = std::max({initial.stress.cwiseAbs().maxCoeff(), initial.pc, 1.0});
+  // The absolute tolerances' stress scale: the initial stresses, or from a stress-free start the
+  // stress of a strain of 1e-6 (a millionth of the bulk modulus), so that a component held at zero
+  // next to stresses of E·ε is not asked for a zero below their round-off (CVODE then stalled).
+  const double stiffness_scale = 1e-6 * model.elasticity().at(mean_pressure(initial.stress)).K;
+  const double stress_scale =
+      std::max({initial.stress.cwiseAbs().maxCoeff(), initial.pc, 1.0, stiffness_scale});
   double* atol = N_VGetArrayPointer(s.tolerances);
   for (int k = 0; k < size; ++k)
     atol[k] = options.absolute_tolerance * ((k < kStrain || k >= kPc) && k != kDilation ? stress_scale : 1.0);
@@ -391,67 +460,126 @@ PointHistory integrate_legs(const Model& model, const State& initial, std::span<
   s.linear_solver = SUNLinSol_Dense(s.y, s.matrix, s.context);
   check(CVodeSetLinearSolver(s.memory, s.linear_solver, s.matrix), "CVodeSetLinearSolver", problem);
   check(CVodeSetMaxNumSteps(s.memory, options.max_steps_per_increment), "CVodeSetMaxNumSteps", problem);
-  check(CVodeRootInit(s.memory, n + 2, switching_function<Model>), "CVodeRootInit", problem);
+  check(CVodeRootInit(s.memory, roots.n + 2, switching_function<Model>), "CVodeRootInit", problem);
   check(CVodeSetNoInactiveRootWarn(s.memory), "CVodeSetNoInactiveRootWarn", problem);
+}
 
+/// Restarts CVODE at (t, y) on the branch problem.active, with that branch's root directions; on
+/// the apex branch, from the apex stress exactly.
+template <class Model>
+void restart(Solver& s, Problem<Model>& problem, sunrealtype t, const CvodeOptions& options, Roots& roots) {
+  if (problem.active == kApexBranch) {
+    double* y = N_VGetArrayPointer(s.y);
+    const Model model = model_at(problem, y);
+    if (const auto apex = held_apex(model, *problem.leg, problem.part, stress_from_voigt(stress_of(y)),
+                                    y[kPc], dilation_of(model, y), options.surface_tolerance))
+      Eigen::Map<Vec6>{y} = stress_to_voigt(*apex);
+  }
+  set_directions(roots.directions_used(), problem.active, roots.n);
+  check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
+  check(CVodeSetRootDirection(s.memory, roots.directions.data()), "CVodeSetRootDirection", problem);
+}
+
+/// Starts `leg` from the state in s.y at pseudo-time 0: a drained leg's pore pressure dissipated,
+/// the flowing surfaces decided at the start.
+template <class Model>
+void start_leg(Solver& s, Problem<Model>& problem, const Leg& leg, const CvodeOptions& options,
+               Roots& roots) {
+  double* y = N_VGetArrayPointer(s.y);
+  problem.leg = &leg;
+  problem.part = Partition(leg);
+  if (!leg.undrained) y[kPorePressure] = 0.0;  // drainage open: the excess has dissipated
+  const Model model = model_at(problem, y);
+  problem.active = active_at_start(model, leg, problem.part, stress_of(y), y[kPc], dilation_of(model, y),
+                                   options.surface_tolerance);
+  restart(s, problem, 0.0, options, roots);
+}
+
+/// At a root of the switching functions: p_c onto the softening bound, the dilation onto the
+/// cut-off, or the flowing surfaces switched; then CVODE restarted there.
+template <class Model>
+void switch_branch(Solver& s, Problem<Model>& problem, sunrealtype t, const CvodeOptions& options,
+                   Roots& roots) {
+  double* y = N_VGetArrayPointer(s.y);
+  const Model model = model_at(problem, y);
+  const int n = roots.n;
+  roots.found.fill(0);
+  check(CVodeGetRootInfo(s.memory, roots.found.data()), "CVodeGetRootInfo", problem);
+  if (roots.found[n] != 0) {
+    // Softening reached the bound: p_c onto it exactly, where the model's rate is 0, and on.
+    y[kPc] = softening_bound(model);
+  } else if (roots.found[n + 1] != 0) {
+    // Dilation reached the cut-off: onto it exactly, where the ψ = 0 twin flows on.
+    y[kDilation] = cutoff_of(model);
+  } else {
+    problem.active =
+        active_at_root(model, *problem.leg, problem.part, stress_of(y), y[kPc], dilation_of(model, y),
+                       options.surface_tolerance, problem.active, roots.found_used());
+  }
+  restart(s, problem, t, options, roots);
+}
+
+/// Integrates from t to the output time `k` (pseudo-time in increments of the leg), switching the
+/// branch at each root so that no step straddles a kink.
+template <class Model>
+void advance_to(Solver& s, Problem<Model>& problem, sunrealtype& t, int k, const CvodeOptions& options,
+                Roots& roots) {
+  for (int switches = 0;; ++switches) {
+    if (k - t <= kTooClose) {
+      // A root a hair before the output time (e.g. reloading to the previous turning point, which
+      // falls on an increment): CVODE cannot start on such an interval, and one Euler step over it
+      // is exact to (k − t)² ≤ 1e-18 of an increment.
+      if (right_hand_side<Model>(t, s.y, s.rates, &problem) != 0)
+        throw std::runtime_error("cvode reference: " + problem.last_error);
+      N_VLinearSum(1.0, s.y, k - t, s.rates, s.y);
+      t = k;
+      check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
+      return;
+    }
+    problem.last_error.clear();
+    const int flag = CVode(s.memory, k, s.y, &t, CV_NORMAL);
+    check(flag, "CVode", problem);
+    if (flag != CV_ROOT_RETURN) return;
+    if (switches > 100)
+      throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
+    switch_branch(s, problem, t, options, roots);
+  }
+}
+
+/// The sample of the ODE state y.
+template <class Model>
+PointSample sample_of(const Problem<Model>& problem, const double* y) {
+  PointSample sample;
+  sample.strain = strain_from_voigt(Eigen::Map<const Vec6>(y + kStrain));
+  sample.state.stress = stress_from_voigt(stress_of(y));
+  sample.state.pc = y[kPc];
+  sample.state.plastic_dilation = dilation_of(*problem.model, y);
+  sample.state.volumetric_strain = problem.initial_volumetric_strain + sample.strain.trace();
+  sample.pore_pressure = y[kPorePressure];
+  return sample;
+}
+
+template <class Model>
+PointHistory integrate_legs(const Model& model, const State& initial, std::span<const Leg> legs,
+                            const CvodeOptions& options) {
+  PointHistory history{{Mat3::Zero(), initial}};
+  if (legs.empty()) return history;
+  Problem<Model> problem{&model, &legs[0], Partition(legs[0]), 0, {}, initial.volumetric_strain};
+  Roots roots;
+  roots.n = surface_count(model);
+  Solver s;
+  open_solver(s, problem, initial, options, roots);
   std::size_t leg_index = 0;
   int increment = 0;  // of the current leg, from 0: where a failure is reported
   try {
     for (const Leg& given : legs) {
       const Leg leg = resolve_leg(given, history.back());
       increment = 0;
-      problem.leg = &leg;
-      problem.part = Partition(leg);
-      if (!leg.undrained) y[kPorePressure] = 0.0;  // drainage open: the excess has dissipated
-      problem.active = active_at_start(model, leg, problem.part, stress_of(y), y[kPc], dilation_of(model, y),
-                                       options.surface_tolerance);
-      check(CVodeReInit(s.memory, 0.0, s.y), "CVodeReInit", problem);
-      set_directions(directions_used, problem.active, n);
-      check(CVodeSetRootDirection(s.memory, directions.data()), "CVodeSetRootDirection", problem);
+      start_leg(s, problem, leg, options, roots);
       sunrealtype t = 0.0;
       for (int k = 1; k <= leg.increments; ++k) {
-        for (int switches = 0;; ++switches) {
-          if (k - t <= kTooClose) {
-            // A root a hair before the output time (e.g. reloading to the previous turning point,
-            // which falls on an increment): CVODE cannot start on such an interval, and one Euler
-            // step over it is exact to (k − t)² ≤ 1e-18 of an increment.
-            if (right_hand_side<Model>(t, s.y, s.rates, &problem) != 0)
-              throw std::runtime_error("cvode reference: " + problem.last_error);
-            N_VLinearSum(1.0, s.y, k - t, s.rates, s.y);
-            t = k;
-            check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
-            break;
-          }
-          problem.last_error.clear();
-          const int flag = CVode(s.memory, k, s.y, &t, CV_NORMAL);
-          check(flag, "CVode", problem);
-          if (flag != CV_ROOT_RETURN) break;
-          if (switches > 100)
-            throw std::runtime_error("cvode reference: more than 100 branch switches in one increment");
-          found.fill(0);
-          check(CVodeGetRootInfo(s.memory, found.data()), "CVodeGetRootInfo", problem);
-          if (found[n] != 0) {
-            // Softening reached the bound: p_c onto it exactly, where the model's rate is 0, and on.
-            y[kPc] = softening_bound(model);
-          } else if (found[n + 1] != 0) {
-            // Dilation reached the cut-off: onto it exactly, where the ψ = 0 twin flows on.
-            y[kDilation] = cutoff_of(model);
-          } else {  // switch branch at the root and restart there
-            problem.active =
-                active_at_root(model, leg, problem.part, stress_of(y), y[kPc], dilation_of(model, y),
-                               options.surface_tolerance, problem.active, found_used);
-          }
-          set_directions(directions_used, problem.active, n);
-          check(CVodeReInit(s.memory, t, s.y), "CVodeReInit", problem);
-          check(CVodeSetRootDirection(s.memory, directions.data()), "CVodeSetRootDirection", problem);
-        }
-        PointSample sample;
-        sample.strain = strain_from_voigt(Eigen::Map<const Vec6>(y + kStrain));
-        sample.state.stress = stress_from_voigt(stress_of(y));
-        sample.state.pc = y[kPc];
-        sample.state.plastic_dilation = dilation_of(model, y);
-        sample.pore_pressure = y[kPorePressure];
-        history.push_back(sample);
+        advance_to(s, problem, t, k, options, roots);
+        history.push_back(sample_of(problem, N_VGetArrayPointer(s.y)));
         increment = k;
       }
       ++leg_index;
