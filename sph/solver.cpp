@@ -94,22 +94,22 @@ SolverSetup make_solver_setup(const Scene& scene) {
   if (scene.numerics.artificial_stress)
     momentum.artificial_stress = {scene.numerics.artificial_stress_epsilon,
                                   scene.numerics.artificial_stress_exponent, kernel, g.particle_spacing};
-  return {kernel,
-          scene.numerics.cfl,
-          c,
-          g.end_time,
-          scene.output.frame_interval,
-          momentum,
-          wall_guard(scene),
-          wall_motions(scene),
-          potential_datum(scene),
-          scene.numerics.velocity_gradient_correction,
-          pressure_dependent,
-          scene.rest,
-          domain(scene),
-          scene.output.checkpoint_interval,
-          constant_c,
-          scene.numerics.ghost_body_force ? g.gravity : Vec2{}};
+  return {.kernel = kernel,
+          .cfl = scene.numerics.cfl,
+          .sound_speed = c,
+          .end_time = g.end_time,
+          .frame_interval = scene.output.frame_interval,
+          .momentum = momentum,
+          .guard = wall_guard(scene),
+          .walls = wall_motions(scene),
+          .potential_datum = potential_datum(scene),
+          .velocity_gradient_correction = scene.numerics.velocity_gradient_correction,
+          .pressure_dependent_stiffness = pressure_dependent,
+          .rest = scene.rest,
+          .domain = domain(scene),
+          .checkpoint_interval = scene.output.checkpoint_interval,
+          .constant_stiffness_sound_speed = constant_c,
+          .ghost_body_force = scene.numerics.ghost_body_force ? g.gravity : Vec2{}};
 }
 
 }  // namespace soilsph::sph

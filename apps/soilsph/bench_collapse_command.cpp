@@ -4,11 +4,15 @@
 // time to rest and to the end time, the steps and time steps, and memory per particle. With N rounds
 // the runs of a scene alternate (every variant once per round, the bare loop between rounds), so that
 // a machine whose speed drifts during the bench slows every variant alike, and each row reports the
-// median. Writes DIR/bench_collapse.csv and .md.
+// median. Writes DIR/bench_collapse.csv and .md. Then the bare pair loop on a square lattice and on
+// a cubic one of about the same particle count (`--bare-particles`), alternated over the rounds:
+// the 3D loop's rate beside the 2D one's, measured in the same process (DIR/bare_loops.csv).
 #include <omp.h>
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -29,6 +33,7 @@ struct BenchOptions {
   std::vector<std::string> overrides;
   double bare_seconds = 1.0;
   int rounds = 1;
+  int bare_particles = 8000;  ///< about this many points in each of the 2D and 3D bare loops
 };
 
 struct Measurement {
@@ -247,6 +252,47 @@ void write_csv(const std::string& file, const std::vector<Measurement>& rows, in
         << m.deposit.repose_angle_deg << ',' << rounds << ',' << m.wall_min << ',' << m.wall_max << '\n';
 }
 
+/// The points of a square (2D) or cubic (3D) lattice of spacing dx with `side` points per axis.
+template <int dim>
+std::array<std::vector<double>, dim> lattice_points(int side, double dx) {
+  std::array<std::vector<double>, dim> x;
+  const int nz = dim == 3 ? side : 1;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i) {
+        const int c[3] = {i, j, k};
+        for (int d = 0; d < dim; ++d) x[static_cast<std::size_t>(d)].push_back(c[d] * dx);
+      }
+  return x;
+}
+
+/// The bare pair loop in 2D and in 3D on lattices of about o.bare_particles points at h = 1.3Δp,
+/// one thread, alternated over the rounds; prints the medians and writes DIR/bare_loops.csv.
+void bare_loops_2d_and_3d(const BenchOptions& o) {
+  using namespace soilsph::sph;
+  const double dx = 1.0e-3, h = 1.3 * dx;
+  const auto side2 = static_cast<int>(std::lround(std::sqrt(o.bare_particles)));
+  const auto side3 = static_cast<int>(std::lround(std::cbrt(o.bare_particles)));
+  const auto plane = lattice_points<2>(side2, dx);
+  const auto space = lattice_points<3>(side3, dx);
+  std::vector<double> rates2, rates3, ratios;
+  for (int round = 0; round < o.rounds; ++round) {
+    rates2.push_back(bare_pair_loop_rate<2>({plane[0], plane[1]}, h, o.bare_seconds));
+    rates3.push_back(bare_pair_loop_rate<3>({space[0], space[1], space[2]}, h, o.bare_seconds));
+    ratios.push_back(rates3.back() / rates2.back());
+  }
+  const double r2 = median(rates2), r3 = median(rates3), ratio = median(ratios);
+  std::printf("bare pair loop, 1 thread, h = 1.3 dx: 2D %zu points %.3g particle-steps/s; 3D %zu points %.3g "
+              "particle-steps/s; 3D/2D %.3f (median of %d rounds)\n",
+              plane[0].size(), r2, space[0].size(), r3, ratio, o.rounds);
+  std::ofstream csv(o.out + "/bare_loops.csv");
+  csv << "# soilsph bench collapse: the bare SPH pair loop on a square and a cubic lattice, h = 1.3 dx, one "
+         "thread, same run; rates in particle-steps/s, medians over the rounds\n"
+         "dimension,particles,particle_steps_per_second,ratio_to_2d,rounds\n"
+      << "2," << plane[0].size() << ',' << r2 << ",1," << o.rounds << '\n'
+      << "3," << space[0].size() << ',' << r3 << ',' << ratio << ',' << o.rounds << '\n';
+}
+
 void run_bench(const BenchOptions& o) {
   std::filesystem::create_directories(o.out);
   const int cores = omp_get_num_procs();
@@ -262,6 +308,7 @@ void run_bench(const BenchOptions& o) {
     md += markdown_memory_row(scene, scene_rows.back());
     rows.insert(rows.end(), scene_rows.begin(), scene_rows.end());
   }
+  bare_loops_2d_and_3d(o);
   write_csv(o.out + "/bench_collapse.csv", rows, o.rounds);
   std::ofstream(o.out + "/bench_collapse.md") << md;
   std::printf("%speak memory %.0f MB; wrote %s/bench_collapse.csv and .md\n", md.c_str(),
@@ -291,6 +338,10 @@ void add_bench_collapse_command(CLI::App& bench) {
                   "runs of every variant, alternated; each row reports the median (a drifting machine slows "
                   "all alike)")
       ->check(CLI::Range(1, 99))
+      ->capture_default_str();
+  cmd->add_option("--bare-particles", o->bare_particles,
+                  "about this many points in each of the 2D and 3D bare loops run after the scenes")
+      ->check(CLI::Range(64, 10000000))
       ->capture_default_str();
   cmd->callback([o] { run_bench(*o); });
 }

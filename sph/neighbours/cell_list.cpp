@@ -6,63 +6,80 @@
 
 namespace soilsph::sph {
 
-void CellList::build(std::span<const double> x, std::span<const double> y, double cell_size, bool keep_positions) {
-  const std::size_t n = x.size();
+template <int dim>
+  requires(dim == 2 || dim == 3)
+void CellGrid<dim>::build(const Coordinates<dim>& x, double cell_size, bool keep_positions) {
+  const std::size_t n = x[0].size();
   if (n == 0) {
-    nx_ = ny_ = 0;
+    n_.fill(0);
     return;
   }
-  const auto [xmin, xmax] = std::minmax_element(x.begin(), x.end());
-  const auto [ymin, ymax] = std::minmax_element(y.begin(), y.end());
-  if (!std::isfinite(*xmin + *xmax + *ymin + *ymax))
-    throw std::runtime_error("neighbour search: a particle position is not finite");
-  x0_ = *xmin;
-  y0_ = *ymin;
   inv_size_ = 1.0 / cell_size;
-  nx_ = static_cast<int>((*xmax - x0_) * inv_size_) + 1;
-  ny_ = static_cast<int>((*ymax - y0_) * inv_size_) + 1;
-  const std::size_t cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-  if (cells > 64 * n + 1024)
-    throw std::runtime_error("neighbour search: particles spread over too large a domain");
+  std::size_t cells = 1;
+  for (int d = 0; d < dim; ++d) {
+    const auto [lo, hi] = std::minmax_element(x[d].begin(), x[d].end());
+    if (!std::isfinite(*lo + *hi)) throw std::runtime_error("neighbour search: a particle position is not finite");
+    // Anchored: the fixed grid's cells, counted from the one of the smallest coordinate (an integer
+    // offset, so that a point's cell is computed alike whatever the bounding box).
+    origin_[d] = anchor_ ? (*anchor_)[d] : *lo;
+    const double first = std::floor((*lo - origin_[d]) * inv_size_), last = std::floor((*hi - origin_[d]) * inv_size_);
+    if (!(last - first < 1e9 && std::abs(first) < 1e9))
+      throw std::runtime_error("neighbour search: particles spread over too large a domain");
+    offset_[d] = static_cast<int>(first);
+    n_[d] = static_cast<int>(last - first) + 1;
+    cells *= static_cast<std::size_t>(n_[d]);
+  }
+  if (cells > 64 * n + 1024) throw std::runtime_error("neighbour search: particles spread over too large a domain");
 
   cell_start_.assign(cells + 1, 0);
   cell_of_.resize(n);
   sorted_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const int c = cell_y(y[i]) * nx_ + cell_x(x[i]);
+    const auto c = static_cast<int>(index_of(cell_of_point(x, i)));
     cell_of_[i] = c;
-    ++cell_start_[c + 1];
+    ++cell_start_[static_cast<std::size_t>(c) + 1];
   }
   for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
   cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) sorted_[cursor_[cell_of_[i]]++] = static_cast<int>(i);
+  for (std::size_t i = 0; i < n; ++i) sorted_[static_cast<std::size_t>(cursor_[static_cast<std::size_t>(cell_of_[i])]++)] = static_cast<int>(i);
   if (!keep_positions) return;
-  sorted_x_.resize(n);
-  sorted_y_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto i = static_cast<std::size_t>(sorted_[k]);
-    sorted_x_[k] = x[i], sorted_y_[k] = y[i];
+  for (int d = 0; d < dim; ++d) {
+    sorted_x_[d].resize(n);
+    for (std::size_t k = 0; k < n; ++k) sorted_x_[d][k] = x[d][static_cast<std::size_t>(sorted_[k])];
   }
 }
 
-CellList::Run CellList::row_of_three(int cx, int cy) const {
-  if (cy < 0 || cy >= ny_) return {nullptr, nullptr, nullptr, 0};
-  const int first = cy * nx_ + std::max(cx - 1, 0), last = cy * nx_ + std::min(cx + 1, nx_ - 1);
-  const auto begin = static_cast<std::size_t>(cell_start_[first]), end = static_cast<std::size_t>(cell_start_[last + 1]);
-  return {sorted_.data() + begin, sorted_x_.data() + begin, sorted_y_.data() + begin, end - begin};
+template <int dim>
+  requires(dim == 2 || dim == 3)
+typename CellGrid<dim>::Run CellGrid<dim>::row_of_three(const Cell& c) const {
+  for (int d = 1; d < dim; ++d)
+    if (c[d] < 0 || c[d] >= n_[d]) return {nullptr, {}, 0};
+  Cell first = c, last = c;
+  first[0] = std::max(c[0] - 1, 0), last[0] = std::min(c[0] + 1, n_[0] - 1);
+  const auto begin = static_cast<std::size_t>(cell_start_[index_of(first)]),
+             end = static_cast<std::size_t>(cell_start_[index_of(last) + 1]);
+  Run run{sorted_.data() + begin, {}, end - begin};
+  for (int d = 0; d < dim; ++d) run.x[d] = sorted_x_[d].data() + begin;
+  return run;
 }
 
-int CellList::cell_x(double x) const {
-  return std::clamp(static_cast<int>((x - x0_) * inv_size_), 0, nx_ - 1);
-}
-int CellList::cell_y(double y) const {
-  return std::clamp(static_cast<int>((y - y0_) * inv_size_), 0, ny_ - 1);
+template <int dim>
+  requires(dim == 2 || dim == 3)
+int CellGrid<dim>::cell(int d, double v) const {
+  // floor: below an anchored grid's origin the cell index is negative before clamping.
+  return std::clamp(static_cast<int>(std::floor((v - origin_[d]) * inv_size_)) - offset_[d], 0, n_[d] - 1);
 }
 
-std::span<const int> CellList::particles_in(int cx, int cy) const {
-  if (cx < 0 || cy < 0 || cx >= nx_ || cy >= ny_) return {};
-  const int c = cy * nx_ + cx;
-  return {sorted_.data() + cell_start_[c], static_cast<std::size_t>(cell_start_[c + 1] - cell_start_[c])};
+template <int dim>
+  requires(dim == 2 || dim == 3)
+std::span<const int> CellGrid<dim>::particles_in(const Cell& c) const {
+  for (int d = 0; d < dim; ++d)
+    if (c[d] < 0 || c[d] >= n_[d]) return {};
+  const std::size_t k = index_of(c);
+  return {sorted_.data() + cell_start_[k], static_cast<std::size_t>(cell_start_[k + 1] - cell_start_[k])};
 }
+
+template class CellGrid<2>;
+template class CellGrid<3>;
 
 }  // namespace soilsph::sph

@@ -7,29 +7,58 @@
 
 namespace soilsph::sph {
 
-void NeighbourList::build(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel,
-                          std::size_t first_boundary) {
-  bool needed = false;
-#pragma omp single copyprivate(needed)
-  needed = search_needed(x, y);
-  if (needed) search(x, y, kernel, first_boundary);
-  const auto n = static_cast<std::ptrdiff_t>(x.size());
-#pragma omp for schedule(static)
-  for (std::ptrdiff_t s = 0; s < n; ++s) fill_row(static_cast<std::size_t>(s), x, y, kernel);
+namespace {
+/// |r|² summed from the first axis on (in 2D: rx² + ry², the order the plane's results were made with).
+template <int dim>
+double squared_norm(const std::array<double, dim>& r) {
+  double s = r[0] * r[0];
+  for (int d = 1; d < dim; ++d) s += r[static_cast<std::size_t>(d)] * r[static_cast<std::size_t>(d)];
+  return s;
 }
 
-bool NeighbourList::search_needed(std::span<const double> x, std::span<const double> y) const {
-  if (x_ref_.size() != x.size()) return true;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double dx = x[i] - x_ref_[i], dy = y[i] - y_ref_[i];
-    if (!(dx * dx + dy * dy <= half_skin2_)) return true;  // also for a non-finite position
+/// Calls f(cell) for the rows of three cells around c: cy − 1 … cy + 1 (and cz − 1 … cz + 1, the
+/// slower index outside), in the cell numbering's order.
+template <int dim, class F>
+void for_each_stencil_row(const typename CellGrid<dim>::Cell& c, F&& f) {
+  typename CellGrid<dim>::Cell row = c;
+  if constexpr (dim == 2) {
+    for (int dy = -1; dy <= 1; ++dy) row[1] = c[1] + dy, f(row);
+  } else {
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy) row[1] = c[1] + dy, row[2] = c[2] + dz, f(row);
+  }
+}
+}  // namespace
+
+template <int dim>
+  requires(dim == 2 || dim == 3)
+void PairList<dim>::build(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary) {
+  bool needed = false;
+#pragma omp single copyprivate(needed)
+  needed = search_needed(x);
+  if (needed) search(x, kernel, first_boundary);
+  const auto n = static_cast<std::ptrdiff_t>(x[0].size());
+#pragma omp for schedule(static)
+  for (std::ptrdiff_t s = 0; s < n; ++s) fill_row(static_cast<std::size_t>(s), x, kernel);
+}
+
+template <int dim>
+  requires(dim == 2 || dim == 3)
+bool PairList<dim>::search_needed(const Coordinates<dim>& x) const {
+  const std::size_t n = x[0].size();
+  if (x_ref_[0].size() != n) return true;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::array<double, dim> moved;
+    for (std::size_t d = 0; d < dim; ++d) moved[d] = x[d][i] - x_ref_[d][i];
+    if (!(squared_norm<dim>(moved) <= half_skin2_)) return true;  // also for a non-finite position
   }
   return false;
 }
 
-void NeighbourList::search(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel,
-                           std::size_t first_boundary) {
-  const std::size_t n = x.size();
+template <int dim>
+  requires(dim == 2 || dim == 3)
+void PairList<dim>::search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary) {
+  const std::size_t n = x[0].size();
   const double radius = kernel.support() + kSkinRatio * kernel.smoothing_length();
   const SearchRadii radii{radius * radius, kernel.support() * kernel.support(),
                           kernel.smoothing_length() * kernel.smoothing_length()};
@@ -37,7 +66,7 @@ void NeighbourList::search(std::span<const double> x, std::span<const double> y,
 #pragma omp single copyprivate(failure)
   {
     try {
-      cells_.build(x, y, radius, true);
+      cells_.build(x, radius, true);
     } catch (...) {
       failure = std::current_exception();
     }
@@ -51,12 +80,10 @@ void NeighbourList::search(std::span<const double> x, std::span<const double> y,
   for (;;) {
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = 0; s < rows; ++s) {
-      const std::size_t found =
-          search_row(static_cast<std::size_t>(s), x, y, radii, first_boundary);
+      const std::size_t found = search_row(static_cast<std::size_t>(s), x, radii, first_boundary);
       if (found > slots_) {  // rare: a compressed cluster; grow with a margin and redo
         std::size_t most = most_candidates_.load(std::memory_order_relaxed);
-        while (found > most &&
-               !most_candidates_.compare_exchange_weak(most, found, std::memory_order_relaxed)) {
+        while (found > most && !most_candidates_.compare_exchange_weak(most, found, std::memory_order_relaxed)) {
         }
       }
     }
@@ -73,19 +100,20 @@ void NeighbourList::search(std::span<const double> x, std::span<const double> y,
 #pragma omp single
   {
     if (neighbour.size() < n * slots_) {
-      for (auto* a : {&rx, &ry, &w, &gx, &gy}) a->resize(n * slots_);
+      for (auto& a : pairs_) a.resize(n * slots_);
       neighbour.resize(n * slots_);
     }
     const double skin = kSkinRatio * kernel.smoothing_length();
     half_skin2_ = 0.25 * skin * skin;  // (s/2)²
-    x_ref_.assign(x.begin(), x.end());
-    y_ref_.assign(y.begin(), y.end());
+    for (std::size_t d = 0; d < dim; ++d) x_ref_[d].assign(x[d].begin(), x[d].end());
     ++searches_;
   }
 }
 
-std::size_t NeighbourList::search_row(std::size_t i, std::span<const double> x, std::span<const double> y,
-                                      const SearchRadii& radii, std::size_t first_boundary) {
+template <int dim>
+  requires(dim == 2 || dim == 3)
+std::size_t PairList<dim>::search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii,
+                                      std::size_t first_boundary) {
   struct Candidate {
     double r2;
     int j;
@@ -94,19 +122,21 @@ std::size_t NeighbourList::search_row(std::size_t i, std::span<const double> x, 
   found.clear();
   const bool boundary_i = i >= first_boundary;
   const auto band = [&](double r2) { return static_cast<std::size_t>(r2 >= radii.inner2) + (r2 >= radii.support2); };
-  const double xi = x[i], yi = y[i];
-  const int cx = cells_.cell_x(xi), cy = cells_.cell_y(yi);
-  for (int dy = -1; dy <= 1; ++dy) {
-    const CellList::Run run = cells_.row_of_three(cx, cy + dy);
+  std::array<double, dim> xi;
+  for (std::size_t d = 0; d < dim; ++d) xi[d] = x[d][i];
+  for_each_stencil_row<dim>(cells_.cell_of_point(x, i), [&](const typename CellGrid<dim>::Cell& row) {
+    const typename CellGrid<dim>::Run run = cells_.row_of_three(row);
     for (std::size_t k = 0; k < run.size; ++k) {
-      const double rxij = xi - run.x[k], ryij = yi - run.y[k], r2 = rxij * rxij + ryij * ryij;
+      std::array<double, dim> r;
+      for (std::size_t d = 0; d < dim; ++d) r[d] = xi[d] - run.x[d][k];
+      const double r2 = squared_norm<dim>(r);
       if (r2 >= radii.search2) continue;
       const int j = run.index[k];
       const auto uj = static_cast<std::size_t>(j);
       if (uj == i || (boundary_i && uj >= first_boundary)) continue;
       found.push_back({r2, j});
     }
-  }
+  });
   const std::size_t count = found.size(), first = i * slots_;
   candidate_count_[i] = std::min(count, slots_);
   if (count <= slots_) {
@@ -123,41 +153,72 @@ std::size_t NeighbourList::search_row(std::size_t i, std::span<const double> x, 
   return count;
 }
 
-void NeighbourList::fill_row(std::size_t i, std::span<const double> x, std::span<const double> y,
-                             const CubicSpline& kernel) {
-  // Everything the loop reads besides x and y in locals: through the stores into the rows the
-  // compiler would otherwise reload the rows' addresses and the kernel's constants at every pair.
-  const CubicSpline W = kernel;
-  const double support2 = W.support() * W.support(), xi = x[i], yi = y[i];
+template <int dim>
+  requires(dim == 2 || dim == 3)
+void PairList<dim>::fill_row(std::size_t i, const Coordinates<dim>& x, const Kernel& kernel) {
+  // Everything the loop reads besides x in locals: through the stores into the rows the compiler
+  // would otherwise reload the rows' addresses and the kernel's constants at every pair.
+  const Kernel W = kernel;
+  const double support2 = W.support() * W.support();
   const std::size_t first = i * slots_, candidates = candidate_count_[i];
   const int* candidate = candidates_.data() + first;
   int* const j_row = neighbour.data() + first;
-  double* const rx_row = rx.data() + first;
-  double* const ry_row = ry.data() + first;
-  double* const w_row = w.data() + first;
-  double* const gx_row = gx.data() + first;
-  double* const gy_row = gy.data() + first;
+  std::array<double*, kPairDoubles> row;
+  for (std::size_t a = 0; a < kPairDoubles; ++a) row[a] = pairs_[a].data() + first;
   std::size_t k = 0;
-  for (std::size_t c = 0; c < candidates; ++c) {
-    const int j = candidate[c];
-    const auto uj = static_cast<std::size_t>(j);
-    const double rxij = xi - x[uj], ryij = yi - y[uj];
-    const double r2 = rxij * rxij + ryij * ryij;
-    if (r2 >= support2) continue;
-    const auto [value, dw_over_r] = W.value_and_gradient_factor(std::sqrt(r2));
-    j_row[k] = j;
-    rx_row[k] = rxij;
-    ry_row[k] = ryij;
-    w_row[k] = value;
-    gx_row[k] = dw_over_r * rxij;
-    gy_row[k] = dw_over_r * ryij;
-    ++k;
+  if constexpr (dim == 2) {
+    const double xi = x[0][i], yi = x[1][i];
+    const std::span<const double> xs = x[0], ys = x[1];
+    double* const rx_row = row[0];
+    double* const ry_row = row[1];
+    double* const w_row = row[2];
+    double* const gx_row = row[3];
+    double* const gy_row = row[4];
+    for (std::size_t c = 0; c < candidates; ++c) {
+      const int j = candidate[c];
+      const auto uj = static_cast<std::size_t>(j);
+      const double rxij = xi - xs[uj], ryij = yi - ys[uj];
+      const double r2 = rxij * rxij + ryij * ryij;
+      if (r2 >= support2) continue;
+      const auto [value, dw_over_r] = W.value_and_gradient_factor(std::sqrt(r2));
+      j_row[k] = j;
+      rx_row[k] = rxij;
+      ry_row[k] = ryij;
+      w_row[k] = value;
+      gx_row[k] = dw_over_r * rxij;
+      gy_row[k] = dw_over_r * ryij;
+      ++k;
+    }
+  } else {
+    const double xi = x[0][i], yi = x[1][i], zi = x[2][i];
+    const std::span<const double> xs = x[0], ys = x[1], zs = x[2];
+    double* const w_row = row[0];
+    double* const g_row = row[1];
+    for (std::size_t c = 0; c < candidates; ++c) {
+      const int j = candidate[c];
+      const auto uj = static_cast<std::size_t>(j);
+      const double rxij = xi - xs[uj], ryij = yi - ys[uj], rzij = zi - zs[uj];
+      const double r2 = rxij * rxij + ryij * ryij + rzij * rzij;
+      if (r2 >= support2) continue;
+      const auto [value, dw_over_r] = W.value_and_gradient_factor(std::sqrt(r2));
+      j_row[k] = j;
+      w_row[k] = value;
+      g_row[k] = dw_over_r;
+      ++k;
+    }
   }
   count_[i] = k;
 }
 
-std::size_t NeighbourList::bytes_per_particle() const {
-  return slots_ * (2 * sizeof(int) + 5 * sizeof(double)) + 2 * sizeof(std::size_t) + 2 * sizeof(double);
+template <int dim>
+  requires(dim == 2 || dim == 3)
+std::size_t PairList<dim>::bytes_per_particle() const {
+  // Per slot: a candidate and a neighbour index, and the pair's doubles; per particle: the two
+  // counts and the search positions.
+  return slots_ * (2 * sizeof(int) + kPairDoubles * sizeof(double)) + 2 * sizeof(std::size_t) + dim * sizeof(double);
 }
+
+template class PairList<2>;
+template class PairList<3>;
 
 }  // namespace soilsph::sph

@@ -1,23 +1,30 @@
 #pragma once
 /// @file
-/// The neighbour list: for every particle i, the particles j ≠ i within the kernel support, with the
-/// pair quantities every stage needs precomputed once per step: x_i − x_j, W_ij and ∇_i W_ij.
-/// Flat arrays with a fixed number of slots per particle (grown when a particle has more candidates
-/// than any before). Boundary–boundary pairs are left out: no stage uses them (a ghost particle only
-/// reads the soil around it).
+/// The neighbour list, in 2 or 3 dimensions: for every particle i, the particles j ≠ i within the
+/// kernel support, with the pair quantities the stages need precomputed once per step. Flat arrays
+/// with a fixed number of slots per particle (grown when a particle has more candidates than any
+/// before). Boundary–boundary pairs are left out: no stage uses them (a ghost particle only reads
+/// the soil around it).
+///
+/// What a pair row holds depends on the dimension. In 2D (~21 pairs a particle at h = 1.3Δp):
+/// x_i − x_j, W_ij and ∇_i W_ij, so that no pass reads a neighbour's position. In 3D (~74 pairs,
+/// and ~100 candidates within the search radius): j, W_ij and dW/dr / r only, 20 B a pair instead
+/// of 44 B; a pass takes x_i − x_j from the positions (∇_i W_ij = dW/dr / r · (x_i − x_j)), which
+/// keeps the list near 2.5 KB a particle (bytes_per_particle()).
 ///
 /// Verlet skin: the cell-list search finds the candidates within 2h + s (s = 0.25h) and is
 /// repeated only when some particle has moved more than s/2 since the last search (two particles
 /// then cannot have come closer than 2h without both having been candidates). Every step the pairs
-/// within 2h and their W, ∇W are recomputed from the candidates at the current positions, one row
-/// (particle) at a time, so that the solver can fuse that pass with the work on the same particle.
-/// A row has as many pair slots as candidate slots, so filling it never overflows. Stored rather
-/// than evaluated again in each of the passes that read them: measured 15 % faster per step
-/// (docs/notes/performance-log.md).
+/// within 2h and their kernel values are recomputed from the candidates at the current positions,
+/// one row (particle) at a time, so that the solver can fuse that pass with the work on the same
+/// particle. A row has as many pair slots as candidate slots, so filling it never overflows. Stored
+/// rather than evaluated again in each of the passes that read them: measured 15 % faster per step
+/// in 2D (docs/notes/performance-log.md).
 ///
 /// Threading: search() and build() use orphaned OpenMP work-sharing, so they are called by every
 /// thread of an enclosing parallel region (the solver's one region per run) or, outside any region,
 /// by one thread, which then does all the work.
+#include <array>
 #include <atomic>
 #include <span>
 #include <vector>
@@ -27,29 +34,11 @@
 
 namespace soilsph::sph {
 
-class NeighbourList {
- public:
-  /// Finds the neighbours of every point; points [first_boundary, size) are boundary points, which
-  /// must not move. Searches only when search_needed(); then fills every row.
-  void build(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel,
-             std::size_t first_boundary);
-  /// All points are soil.
-  void build(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel) {
-    build(x, y, kernel, x.size());
-  }
-
-  /// True before the first search, for a different point count, or when a point has moved more
-  /// than half the skin since the last search (serial; O(n)).
-  bool search_needed(std::span<const double> x, std::span<const double> y) const;
-  /// The cell-list search for candidates within 2h + s. Throws std::runtime_error for a position
-  /// that is not finite or points spread over too large a domain (in the calling thread that does
-  /// the cell binning; call from a try block inside a parallel region).
-  void search(std::span<const double> x, std::span<const double> y, const CubicSpline& kernel,
-              std::size_t first_boundary);
-  /// The pairs of particle i within the support, from its candidates (no synchronisation).
-  void fill_row(std::size_t i, std::span<const double> x, std::span<const double> y,
-                const CubicSpline& kernel);
-
+/// The pairs a row stores, per dimension (see the file comment).
+template <int dim>
+struct PairRow;
+template <>
+struct PairRow<2> {
   /// One pair (i, j) within the support.
   struct Pair {
     std::size_t j;
@@ -57,8 +46,6 @@ class NeighbourList {
     double w;       ///< W_ij
     double gx, gy;  ///< ∇_i W_ij = dW/dr (x_i − x_j)/r (1/m³)
   };
-  /// Number of pairs of particle i.
-  std::size_t pair_count(std::size_t i) const { return count_[i]; }
   /// The pairs of particle i as contiguous arrays (pair k: neighbour j[k], x_i − x_j = (rx[k], ry[k]),
   /// W w[k], ∇_i W (gx[k], gy[k])), for loops the compiler vectorises across pairs.
   struct Row {
@@ -66,37 +53,115 @@ class NeighbourList {
     const double *rx, *ry, *w, *gx, *gy;
     std::size_t size;
   };
+};
+template <>
+struct PairRow<3> {
+  struct Pair {
+    std::size_t j;
+    double w;          ///< W_ij
+    double dw_over_r;  ///< dW/dr / r at r = |x_i − x_j| (1/m⁶): ∇_i W_ij is it times x_i − x_j
+  };
+  struct Row {
+    const int* j;
+    const double *w, *dw_over_r;
+    std::size_t size;
+  };
+};
+
+template <int dim>
+  requires(dim == 2 || dim == 3)
+class PairList {
+ public:
+  using Kernel = CubicSplineKernel<dim>;
+  using Pair = typename PairRow<dim>::Pair;
+  using Row = typename PairRow<dim>::Row;
+
+  /// Anchors the search's cell grid at a fixed origin (neighbours/cell_list.h): the candidates'
+  /// order then depends on the positions alone.
+  void anchor_cells_at(const std::array<double, dim>& origin) { cells_.anchor_at(origin); }
+
+  /// Finds the neighbours of every point; points [first_boundary, size) are boundary points, which
+  /// must not move. Searches only when search_needed(); then fills every row.
+  void build(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary);
+  /// True before the first search, for a different point count, or when a point has moved more
+  /// than half the skin since the last search (serial; O(n)).
+  bool search_needed(const Coordinates<dim>& x) const;
+  /// The cell-list search for candidates within 2h + s. Throws std::runtime_error for a position
+  /// that is not finite or points spread over too large a domain (in the calling thread that does
+  /// the cell binning; call from a try block inside a parallel region).
+  void search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary);
+  /// The pairs of particle i within the support, from its candidates (no synchronisation).
+  void fill_row(std::size_t i, const Coordinates<dim>& x, const Kernel& kernel);
+
+  // The plane's calls with the coordinates apart (the 2D solver's).
+  void build(std::span<const double> x, std::span<const double> y, const Kernel& kernel, std::size_t first_boundary)
+    requires(dim == 2)
+  {
+    build({x, y}, kernel, first_boundary);
+  }
+  /// All points are soil.
+  void build(std::span<const double> x, std::span<const double> y, const Kernel& kernel)
+    requires(dim == 2)
+  {
+    build({x, y}, kernel, x.size());
+  }
+  bool search_needed(std::span<const double> x, std::span<const double> y) const
+    requires(dim == 2)
+  {
+    return search_needed(Coordinates<2>{x, y});
+  }
+  void search(std::span<const double> x, std::span<const double> y, const Kernel& kernel, std::size_t first_boundary)
+    requires(dim == 2)
+  {
+    search({x, y}, kernel, first_boundary);
+  }
+  void fill_row(std::size_t i, std::span<const double> x, std::span<const double> y, const Kernel& kernel)
+    requires(dim == 2)
+  {
+    fill_row(i, {x, y}, kernel);
+  }
+
+  /// Number of pairs of particle i.
+  std::size_t pair_count(std::size_t i) const { return count_[i]; }
   Row row(std::size_t i) const {
     const std::size_t k = i * slots_;
-    return {neighbour.data() + k, rx.data() + k, ry.data() + k, w.data() + k,
-            gx.data() + k,        gy.data() + k, count_[i]};
+    if constexpr (dim == 2)
+      return {neighbour.data() + k, pairs_[0].data() + k, pairs_[1].data() + k, pairs_[2].data() + k,
+              pairs_[3].data() + k, pairs_[4].data() + k, count_[i]};
+    else
+      return {neighbour.data() + k, pairs_[0].data() + k, pairs_[1].data() + k, count_[i]};
   }
   /// Calls f(pair) for every pair of particle i, as filled by fill_row().
   template <class F>
   void for_each_pair(std::size_t i, F&& f) const {
     const Row r = row(i);
-    for (std::size_t k = 0; k < r.size; ++k)
-      f(Pair{static_cast<std::size_t>(r.j[k]), r.rx[k], r.ry[k], r.w[k], r.gx[k], r.gy[k]});
+    for (std::size_t k = 0; k < r.size; ++k) {
+      if constexpr (dim == 2)
+        f(Pair{static_cast<std::size_t>(r.j[k]), r.rx[k], r.ry[k], r.w[k], r.gx[k], r.gy[k]});
+      else
+        f(Pair{static_cast<std::size_t>(r.j[k]), r.w[k], r.dw_over_r[k]});
+    }
   }
 
   std::size_t size() const { return count_.size(); }
-  /// The positions of the last search (a resumed run searches from them again to get the same
-  /// candidates in the same order).
-  const std::vector<double>& search_x() const { return x_ref_; }
-  const std::vector<double>& search_y() const { return y_ref_; }
+  /// The positions of the last search along axis d (a resumed run searches from them again to get
+  /// the same candidates in the same order).
+  const std::vector<double>& search_positions(int d) const { return x_ref_[static_cast<std::size_t>(d)]; }
+  const std::vector<double>& search_x() const { return x_ref_[0]; }
+  const std::vector<double>& search_y() const { return x_ref_[1]; }
   /// Cell-list searches done so far.
   std::size_t searches() const { return searches_; }
   /// Bytes held per particle by the list (pairs and candidates).
   std::size_t bytes_per_particle() const;
 
   static constexpr double kSkinRatio = 0.25;  ///< s/h
+  /// The doubles stored per pair: x_i − x_j, W, ∇W in 2D; W, dW/dr / r in 3D.
+  static constexpr int kPairDoubles = dim == 2 ? 5 : 2;
 
  private:
-  // Per pair k (i, j = neighbour[k]):
-  std::vector<int> neighbour;  ///< j
-  std::vector<double> rx, ry;  ///< x_i − x_j (m)
-  std::vector<double> w;       ///< W_ij
-  std::vector<double> gx, gy;  ///< ∇_i W_ij = dW/dr (x_i − x_j)/r (1/m³)
+  // Per pair k (i, j = neighbour[k]): j, and the kPairDoubles arrays of PairRow<dim>.
+  std::vector<int> neighbour;
+  std::array<std::vector<double>, kPairDoubles> pairs_;
 
   /// Squares of the search radius 2h + s, the support 2h and h.
   struct SearchRadii {
@@ -104,17 +169,21 @@ class NeighbourList {
   };
   /// Candidates of particle i within the search radius; returns how many there are (all of them,
   /// even beyond the slots, which then must grow).
-  std::size_t search_row(std::size_t i, std::span<const double> x, std::span<const double> y,
-                         const SearchRadii& radii, std::size_t first_boundary);
+  std::size_t search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii,
+                         std::size_t first_boundary);
 
-  CellList cells_;
-  std::size_t slots_ = 48;  ///< candidate (= pair) slots per particle
+  CellGrid<dim> cells_;
+  /// Candidate (= pair) slots per particle: in 3D, 92 lattice points lie within 2h + s at h = 1.3Δp.
+  std::size_t slots_ = dim == 2 ? 48 : 100;
   std::vector<std::size_t> count_, candidate_count_;
   std::vector<int> candidates_;
-  std::vector<double> x_ref_, y_ref_;  ///< positions at the last search
-  double half_skin2_ = 0.0;            ///< (s/2)²
+  std::array<std::vector<double>, dim> x_ref_;  ///< positions at the last search
+  double half_skin2_ = 0.0;                     ///< (s/2)²
   std::size_t searches_ = 0;
   std::atomic<std::size_t> most_candidates_{0};  ///< largest row found beyond the slots (0: none)
 };
+
+/// The plane-strain solver's neighbour list.
+using NeighbourList = PairList<2>;
 
 }  // namespace soilsph::sph
