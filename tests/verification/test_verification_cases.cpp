@@ -19,7 +19,7 @@ const fs::path kCases = fs::path(SOILSPH_SOURCE_DIR) / "verification" / "cases";
 /// returns the ParameterError message of reading it ("" if it reads).
 std::string error_of(const std::string& body) {
   static const soilsph::testing::TempDir dir("soilsph-cases");  // one per test process
-  const fs::path file = dir / "case-under-test.toml";
+  const fs::path file = dir / "soilsph-case-under-test.toml";
   std::ofstream(file) << "[[case]]\nname = \"x\"\nmaterial = \""
                       << (kCases / "materials" / "mcc-pressure-dependent.toml").string() << "\"\n"
                       << body;
