@@ -100,13 +100,16 @@ struct Outcome {
   enum class Status { Exited, Signalled, Hang, NotStarted } status = Status::NotStarted;
   int code = 0;  ///< exit status, or the signal number
   double seconds = 0.0;
+  double cpu_seconds = 0.0;  ///< user + system CPU time of the child (0 if it did not end by itself)
   std::string out, err;  ///< the child's stdout and stderr (first 1 MB each)
 };
 
 /// Limits of a child: wall time; address space (so that a runaway allocation fails at once instead of
 /// swapping the shared machine); file size (output of runs that never stop).
 struct Limits {
-  double timeout_seconds = 20.0;  ///< an unmutated case takes 0.1 s; the largest valid one about 5 s
+  /// On an idle machine: an unmutated case takes 0.1 s, the largest valid one about 5 s. A run scales
+  /// it by the machine's load as measured by a calibration run (calibrated_limits).
+  double timeout_seconds = 20.0;
   std::uint64_t address_space_bytes = 4ull << 30;
   std::uint64_t file_size_bytes = 1ull << 30;
 };
@@ -156,10 +159,21 @@ struct CaseResult {
 struct RunReport {
   std::uint64_t cases = 0;
   double seconds = 0.0;
+  double slowdown = 1.0;          ///< the calibration's measured_slowdown
+  double timeout_seconds = 0.0;   ///< the time limit the cases ran with (calibrated)
   std::vector<CaseResult> failures;  ///< in index order
   std::size_t exit_counts[3] = {0, 0, 0};
   std::string text;  ///< the summary by category (also written to failures/REPORT.md)
 };
+
+/// How much slower than its own CPU time a run of the small unmutated D-P collapse (the fuzzer's
+/// commonest heavy case) goes now, with `jobs` copies at once as the fuzz run has: wall / CPU seconds
+/// of the slowest copy, at least 1. On a machine shared by more processes than cores, every child's
+/// wall time stretches by this factor, valid or not.
+double measured_slowdown(const Config& config, const fs::path& dir);
+/// `limits` with the time limit stretched by the slowdown, so that a valid case on a loaded machine
+/// is not taken for a hang while a real hang (CPU-bound or blocked) is still killed.
+Limits calibrated_limits(Limits limits, double slowdown);
 
 /// Runs the cases of `config` (in parallel), keeps each failing case's folder under failures/ with its
 /// command, and writes failures/REPORT.md and failures/failures.tsv.

@@ -153,8 +153,9 @@ Outcome run_child(const std::string& executable, const std::vector<std::string>&
   setpgid(pid, pid);  // also here, so that a kill of the group cannot race the child's own call
   int status = 0;
   bool hang = false;
+  rusage usage{};
   for (int nap = 1;; nap = std::min(nap * 2, 20)) {
-    const pid_t done = waitpid(pid, &status, WNOHANG);
+    const pid_t done = wait4(pid, &status, WNOHANG, &usage);
     if (done == pid) break;
     if (done < 0 && errno != EINTR) break;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -170,6 +171,10 @@ Outcome run_child(const std::string& executable, const std::vector<std::string>&
   }
   kill(-pid, SIGKILL);  // anything the child left behind in its group
   o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!hang) {
+    o.cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                    1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  }
   if (hang) {
     o.status = Outcome::Status::Hang;
   } else if (WIFEXITED(status)) {
@@ -215,6 +220,37 @@ Config Config::from_environment(std::string executable, std::string source_dir, 
   return c;
 }
 
+double measured_slowdown(const Config& config, const fs::path& dir) {
+  const Inputs inputs = Inputs::load(config.source_dir);
+  Case calibration;
+  for (const Case& c : base_cases(inputs))
+    if (c.command == "collapse") {
+      calibration = c;
+      break;
+    }
+  Limits generous = config.limits;
+  generous.timeout_seconds = 600.0;
+  std::vector<Outcome> outcomes(static_cast<std::size_t>(std::max(1, config.jobs)));
+  std::vector<std::thread> copies;
+  for (std::size_t k = 0; k < outcomes.size(); ++k) {
+    const fs::path copy = dir / ("calibration-" + std::to_string(k));
+    fs::remove_all(copy);
+    fs::create_directories(copy);
+    for (const File& f : calibration.files) std::ofstream(copy / f.name, std::ios::binary) << f.content;
+    copies.emplace_back([&, k, copy] { outcomes[k] = run_child(config.executable, calibration.args, copy, generous); });
+  }
+  for (std::thread& t : copies) t.join();
+  double slowdown = 1.0;
+  for (const Outcome& o : outcomes)
+    if (o.status == Outcome::Status::Exited && o.cpu_seconds > 0.0) slowdown = std::max(slowdown, o.seconds / o.cpu_seconds);
+  return slowdown;
+}
+
+Limits calibrated_limits(Limits limits, double slowdown) {
+  limits.timeout_seconds *= std::max(1.0, slowdown);
+  return limits;
+}
+
 RunReport run(const Config& config) {
   const Inputs inputs = Inputs::load(config.source_dir);
   std::vector<std::uint64_t> indices = config.only;
@@ -229,6 +265,10 @@ RunReport run(const Config& config) {
   fs::create_directories(cases_dir);
 
   RunReport report;
+  // The time limit as on an idle machine, stretched by the load measured now (docs/fuzzing.md).
+  report.slowdown = measured_slowdown(config, cases_dir);
+  const Limits case_limits = calibrated_limits(config.limits, report.slowdown);
+  report.timeout_seconds = case_limits.timeout_seconds;
   std::mutex mutex;
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> done{0};
@@ -250,7 +290,7 @@ RunReport run(const Config& config) {
       }
       // A run on more than one thread waits at every barrier for threads that share the (busy) cores
       // with the other jobs: it gets twice the time before it counts as a hang.
-      Limits limits = config.limits;
+      Limits limits = case_limits;
       const auto threads = std::find(r.c.args.begin(), r.c.args.end(), "--threads");
       if (threads != r.c.args.end() && threads + 1 != r.c.args.end() && threads[1] != "1")
         limits.timeout_seconds *= 2;
@@ -274,7 +314,7 @@ RunReport run(const Config& config) {
         for (std::size_t k = 0; k < r.c.mutations.size(); ++k) about << (k ? "; " : "") << r.c.mutations[k];
         about << "\nexpected exit: " << expect_words(r.c.expect)
               << (r.c.expect_why.empty() ? "" : " (" + r.c.expect_why + ")") << "\n"
-              << "outcome: " << outcome_words(r.outcome, config.limits.timeout_seconds) << " after "
+              << "outcome: " << outcome_words(r.outcome, case_limits.timeout_seconds) << " after "
               << r.outcome.seconds << " s\n"
               << "command: " << command_line(config.executable, r.c, kept) << "\n"
               << "reproduce: SOILSPH_FUZZ_SEED=" << r.c.seed << " SOILSPH_FUZZ_CASE=" << r.c.index
@@ -294,7 +334,7 @@ RunReport run(const Config& config) {
       const std::lock_guard lock(mutex);
       if (config.verbose)
         std::cerr << "case " << r.c.index << " " << r.c.kind << ": "
-                  << outcome_words(r.outcome, config.limits.timeout_seconds) << ", "
+                  << outcome_words(r.outcome, case_limits.timeout_seconds) << ", "
                   << (r.findings.empty() ? "ok" : r.findings.front().category) << "\n";
       else if (indices.size() >= 1000 && finished % (indices.size() / 20) == 0)
         std::cerr << "fuzz: " << finished << " of " << indices.size() << " cases, " << report.failures.size()
@@ -332,7 +372,10 @@ RunReport run(const Config& config) {
                                : std::string("chosen cases"))
        << ") in " << report.seconds << " s with " << config.jobs
        << " jobs; exit 0/1/2: " << report.exit_counts[0] << "/" << report.exit_counts[1] << "/"
-       << report.exit_counts[2] << "; " << report.failures.size() << " failing case(s)\n";
+       << report.exit_counts[2] << "; " << report.failures.size() << " failing case(s)\n"
+       << "time limit " << report.timeout_seconds << " s per case: " << config.limits.timeout_seconds
+       << " s on an idle machine times the load's slowdown " << report.slowdown
+       << " (wall / CPU time of a calibration run)\n";
   for (const auto& [category, results] : by_category) {
     const CaseResult& r = *results.front();
     const Finding* f = &r.findings.front();
@@ -354,7 +397,7 @@ RunReport run(const Config& config) {
       std::snprintf(name, sizeof name, "case-%06llu", static_cast<unsigned long long>(r->c.index));
       md << "- case " << r->c.index << " (" << r->c.kind << "): ";
       for (std::size_t k = 0; k < r->c.mutations.size(); ++k) md << (k ? "; " : "") << r->c.mutations[k];
-      md << " — " << outcome_words(r->outcome, config.limits.timeout_seconds) << "\n";
+      md << " — " << outcome_words(r->outcome, case_limits.timeout_seconds) << "\n";
       for (const Finding& f : r->findings)
         if (f.category == category) md << "  - " << one_line(f.detail) << "\n";
       md << "  - last stderr line: `" << one_line(last_line(r->outcome.err)) << "`\n";
@@ -374,7 +417,7 @@ RunReport run(const Config& config) {
     }
     for (const std::string& m : r.c.mutations) mutations += (mutations.empty() ? "" : "; ") + m;
     tsv << r.c.index << '\t' << r.c.kind << '\t' << categories << '\t'
-        << outcome_words(r.outcome, config.limits.timeout_seconds) << '\t' << expect_words(r.c.expect) << '\t'
+        << outcome_words(r.outcome, case_limits.timeout_seconds) << '\t' << expect_words(r.c.expect) << '\t'
         << one_line(mutations) << '\t' << one_line(details) << '\t' << one_line(last_line(r.outcome.err))
         << '\t' << command_line(config.executable, r.c, failures_dir / name) << '\n';
   }

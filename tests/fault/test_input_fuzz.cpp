@@ -39,6 +39,15 @@ TEST_CASE("fuzz harness: a child's exit status, signal, hang and output are seen
   const Outcome hang = run_child("/bin/sh", {"-c", "sleep 30 & sleep 30"}, dir, limits);
   CHECK(hang.status == Outcome::Status::Hang);
   CHECK(hang.seconds < 5.0);
+  // CPU time is measured: a busy loop of 0.3 s of CPU takes at least that much wall time.
+  const Outcome busy =
+      run_child("/bin/sh", {"-c", "end=$(($(date +%s%N) + 300000000)); while [ $(date +%s%N) -lt $end ]; do :; done"},
+                dir, limits);
+  CHECK(busy.status == Outcome::Status::Exited);
+  CHECK(busy.cpu_seconds > 0.0);
+  CHECK(busy.cpu_seconds <= busy.seconds + 0.05);
+  CHECK(calibrated_limits(limits, 3.0).timeout_seconds == 3.0);
+  CHECK(calibrated_limits(limits, 0.5).timeout_seconds == 1.0);  // never below the idle limit
   const Outcome omp = run_child("/bin/sh", {"-c", "echo $OMP_NUM_THREADS; pwd"}, dir, limits);
   CHECK(omp.out == "1\n" + fs::canonical(dir).string() + "\n");
 }
@@ -155,12 +164,13 @@ TEST_CASE("fuzz harness: every unmutated input passes every check", "[fuzz][harn
   // alarm of the checks (or a regression of soilsph on its own inputs), not a fuzz finding.
   const Inputs inputs = Inputs::load(kSource);
   const fs::path root = scratch("base");
+  Config config = Config::from_environment(kExe, kSource, kWork);
+  config.limits.timeout_seconds = 30;
+  const Limits limits = calibrated_limits(config.limits, measured_slowdown(config, root));
   for (const Case& c : base_cases(inputs)) {
     const fs::path dir = root / ("base-" + std::to_string(c.index));
     fs::create_directories(dir);
     for (const File& f : c.files) std::ofstream(dir / f.name, std::ios::binary) << f.content;
-    Limits limits;
-    limits.timeout_seconds = 30;
     const Outcome o = run_child(kExe, c.args, dir, limits);
     INFO(command_line(kExe, c, dir) << "\nstderr: " << o.err);
     CHECK(o.status == Outcome::Status::Exited);

@@ -12,6 +12,7 @@
 #include "tests/common/table1_materials.h"
 #include "verification/point_test.h"
 #include "verification/programme/programme_file.h"
+#include "../common/temp_dir.h"
 
 using namespace soilsph;
 using namespace soilsph::verification;
@@ -113,9 +114,9 @@ TEST_CASE("MCC softening bound under cyclic shear: CVODE stops softening at the 
   // side softens p_c from 400 kPa onto the bound of 300 kPa, where CVODE's rate jumps to 0 (it once
   // failed there, "corrector convergence test failed", until the bound became a root of its
   // switching function).
-  auto programme = [](double bound) {
-    const std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("soilsph_bounded_cyclic_" + std::to_string(bound) + ".toml");
+  const soilsph::testing::TempDir dir("soilsph-bounded-cyclic");
+  auto programme = [&dir](double bound) {
+    const std::filesystem::path path = dir / ("bounded-cyclic-" + std::to_string(bound) + ".toml");
     std::ofstream(path) << "[material]\nmodel = \"modified-cam-clay\"\ndensity = 2000.0\npoisson_ratio = 0.3\n"
                            "friction_angle = 30.0\ncompression_index = 0.085\nswelling_index = 0.019\n"
                            "initial_void_ratio = 0.68\nelasticity = \"pressure-dependent\"\n"

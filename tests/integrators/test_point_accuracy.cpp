@@ -86,7 +86,18 @@ TEST_CASE("MCC implicit in coarse steps far on the dry side: the stiffness cap a
     t.increments = n;
     INFO(n << " increments");
     const std::vector<Leg> legs = build_legs(t);
-    CHECK_NOTHROW(drive_mixed_control(implicit_mcc, initial, legs));
+    PointHistory history;
+    REQUIRE_NOTHROW(history = drive_mixed_control(implicit_mcc, initial, legs));
+    // Oracles of the test's definition and the model's, not of this run: every increment ends on
+    // the drained path (σ_r held at p0, tension-positive) at the axial strain imposed, and on or
+    // inside the yield surface f = M² p (p − p_c) + q² ≤ 0 (an implicit return ends on it when plastic).
+    for (std::size_t k = 1; k < history.size(); ++k) {
+      const State& s = history[k].state;
+      CHECK(s.stress(1, 1) == Approx(-t.p_initial).epsilon(1e-6));
+      CHECK(s.stress(2, 2) == Approx(-t.p_initial).epsilon(1e-6));
+      CHECK(-history[k].strain(0, 0) == Approx(0.1 * static_cast<double>(k) / n).epsilon(1e-12));
+      CHECK(mcc.normalized_yield(s.stress, s.pc) <= 1e-8);
+    }
     MixedControlOptions no_splitting;
     no_splitting.max_splits = 0;
     try {

@@ -9,6 +9,7 @@
 #include "../common/material_toml.h"
 #include "sph/diagnostics.h"
 #include "sph/gravity_loading.h"
+#include "sph/solver.h"
 
 using namespace soilsph;
 using namespace soilsph::sph;
@@ -49,10 +50,23 @@ TEST_CASE("gravity loading: a box between walls settles at rho g depth and at re
   set_geostatic_state(p, scene);
   const GravityLoadingReport r = relax_under_gravity(scene, p);
   CHECK(r.steps > 0);
-  CHECK(r.kinetic_energy < scene.initial.gravity_loading.kinetic_tolerance);
-  CHECK(r.stress_change < scene.initial.gravity_loading.stress_tolerance);
   CHECK(max_speed(p) == 0.0);
   REQUIRE(all_finite(p));
+  // Equilibrium, which the relaxation's exit test (kinetic energy, stress change per step) does not
+  // check itself: one step of the momentum equation from the relaxed state accelerates the soil
+  // vertically by less than 1 % of g on average (the floor's ghosts carry its weight: Σ m a_y =
+  // −Σ m g + the floor's force). The soil within the kernel's support 2h = 1.04 cm of the withdrawn
+  // left wall is left out: its wall is gone at t = 0, so it is no longer held.
+  {
+    Particles q = p;
+    const SolverSetup setup = make_solver_setup(scene);
+    Workspace work(setup, q);
+    advance(std::get<DruckerPrager>(scene.material), setup, q, work, setup.initial_time_step());
+    double mass = 0.0, momentum_rate = 0.0;
+    for (std::size_t i = 0; i < q.soil_count; ++i)
+      if (q.x0[i] > 2.0 * 1.3 * 0.004) mass += q.mass[i], momentum_rate += q.mass[i] * q.ay[i];
+    CHECK(std::abs(momentum_rate / mass) < 0.01 * 9.81);
+  }
   // Mid-depth, away from the walls: the rows at y = 0.018 and 0.022 (depths 0.022 and 0.018 below the
   // top 0.04). Their mean σyy within 3 % of −ρ g × 0.02. The mean of two rows, not each: the relaxed
   // SPH stress carries a row-to-row (odd-even) oscillation that the momentum equation does not see

@@ -13,6 +13,7 @@
 #include "sph/analysis/boundary_forces.h"
 #include "sph/collapse.h"
 #include "sph/output/history_writer.h"
+#include "../common/temp_dir.h"
 
 using namespace soilsph;
 using namespace soilsph::sph;
@@ -153,8 +154,8 @@ wall_withdrawal = "instant"
 
 TEST_CASE("a resumed run's histories keep the rows before its checkpoint and drop later and torn ones",
           "[histories][resume]") {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "soilsph_test_histories";
-  std::filesystem::remove_all(dir);
+  const soilsph::testing::TempDir scratch("soilsph-histories");
+  const std::filesystem::path dir = scratch / "run";
   {
     HistoryWriter w(dir, {"floor", "wall"}, {"g"});
     for (const double t : {0.0, 0.1, 0.2}) {

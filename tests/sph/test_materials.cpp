@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "helpers.h"
 #include "sph/collapse.h"
 #include "sph/diagnostics.h"
+#include "../common/temp_dir.h"
 
 using namespace soilsph;
 using namespace soilsph::sph;
@@ -182,6 +184,65 @@ TEST_CASE("each material integrates with its own scheme", "[sph][materials]") {
   CHECK(run.deposit.runout_m > kWidth);
 }
 
+namespace {
+/// σ^{n+1} of soil particle i by `model` from its state before the step and the velocity gradient
+/// of eq 23 recomputed from what the step left: v^{n+½} (now in p.vx, p.vy, ghosts mirrored), the
+/// pairs at x^n and the volumes m/ρ^n; nullopt where the model cannot update it.
+template <class Model>
+std::optional<Mat3> stress_by(const Model& model, const State& before, const Particles& p, const Workspace& work,
+                              const SolverSetup& setup, std::size_t i, double dt) {
+  const VelocityGradient L = kinematic_rates_of(p, work.neighbours, i, p.vx, p.vy, work.volume,
+                                                setup.velocity_gradient_correction)
+                                 .L;
+  StepFailure ignored;
+  try {
+    return update_splitting_on_failure(model, fallback_model(model), before, L.strain_increment(dt),
+                                       L.spin_increment(dt), ignored)
+        .stress;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+}  // namespace
+
+TEST_CASE("each group's particles are updated by their own material's model, not the other's", "[sph][materials]") {
+  // The two-material column 0.02 s after the wall's withdrawal (both soils yield at the toe), then one
+  // more step: every particle's new stress must be its own model's update of its old state for the
+  // step's strain increment, recomputed here. Both soils share E and nu, so the other model gives the
+  // same elastic update; it differs where the soil yields, and enough particles yield in each layer
+  // for a group run with the other group's model to fail this test.
+  const Scene scene = test::shipped_scene("two-material-column", {"scene.particle_spacing=0.004"});
+  Particles p = build_particles(scene);
+  set_geostatic_state(p, scene);
+  const SolverSetup setup = make_solver_setup(scene);
+  const MaterialGroups groups = material_groups(scene.materials, p);
+  Workspace work(setup, p);
+  work.use_threads(1, groups.size());
+  const double dt = setup.initial_time_step();
+  for (double t = 0.0; t < 0.02; t += dt) advance_groups(groups, setup, p, work, dt, [] {});
+  const std::vector<State> before(p.state.begin(), p.state.end());
+  advance_groups(groups, setup, p, work, dt, [] {});
+  REQUIRE_FALSE(work.failed());
+  const auto& clay = std::get<ModifiedCamClay>(scene.materials[0]);
+  const auto& sand = std::get<DruckerPrager>(scene.materials[1]);
+  std::size_t told_apart[2] = {0, 0};
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    const int k = p.material[i];
+    const std::optional<Mat3> own = k == 0 ? stress_by(clay, before[i], p, work, setup, i, dt)
+                                           : stress_by(sand, before[i], p, work, setup, i, dt);
+    const std::optional<Mat3> other = k == 0 ? stress_by(sand, before[i], p, work, setup, i, dt)
+                                             : stress_by(clay, before[i], p, work, setup, i, dt);
+    INFO("particle " << i << " of material " << k);
+    REQUIRE(own.has_value());
+    const double scale = std::max(1.0, own->norm());
+    CHECK((p.state[i].stress - *own).norm() <= 1e-9 * scale);
+    if (!other || (p.state[i].stress - *other).norm() > 1e-6 * scale) ++told_apart[k];
+  }
+  INFO("particles where the other model's update differs: clay " << told_apart[0] << ", sand " << told_apart[1]);
+  CHECK(told_apart[0] > 0);
+  CHECK(told_apart[1] > 0);
+}
+
 TEST_CASE("particles imported from CSV reproduce the column's lattice", "[sph][import]") {
   const Scene imported = test::shipped_scene("imported-column", {"scene.end_time=0.02"});
   const Scene column = test::shipped_scene("collapse-dp", {"scene.particle_spacing=0.004", "scene.end_time=0.02"});
@@ -207,8 +268,8 @@ TEST_CASE("particles imported from CSV reproduce the column's lattice", "[sph][i
 }
 
 TEST_CASE("a particle file is validated with the file and line named", "[sph][import]") {
-  const std::string dir = (std::filesystem::temp_directory_path() / "soilsph-import-test").string();
-  std::filesystem::create_directories(dir);
+  const soilsph::testing::TempDir scratch("soilsph-import-test");
+  const std::string dir = scratch.path().string();
   const auto scene_with = [&](const std::string& csv) {
     std::ofstream(dir + "/p.csv") << csv;
     return test::scene_from_text(replaced(shipped_text("imported-column"), "file = \"imported-column.csv\"",

@@ -13,6 +13,7 @@
 #include "sph/stages/momentum.h"
 #include "sph/stages/stress_update.h"
 #include "sph/stages/velocity_gradient.h"
+#include "constitutive/rotation.h"
 
 using namespace soilsph;
 using namespace soilsph::sph;
@@ -223,6 +224,38 @@ TEST_CASE(
   // An update that succeeds whole is not counted.
   update_splitting_on_failure(succeeds, fails, State{}, strain, Mat3::Zero(), log);
   CHECK(log.fallback_updates() == 4);
+}
+
+namespace {
+/// CoarseFailingModel that also turns the stress with the spin increment (constitutive/rotation.h).
+struct CoarseFailingRotatingModel {
+  double largest;
+  State update(const State& state, const Mat3& strain, const Mat3& spin) const {
+    if (strain.norm() > largest) throw IntegrationError("no convergence");
+    return rotate_state(state, spin);
+  }
+};
+}  // namespace
+
+TEST_CASE("a failed stress update redone in parts turns the stress by each part's share of the spin",
+          "[sph][stress]") {
+  // A uniaxial stress σ_xx = 1 kPa and an in-plane spin of 0.02 rad over the step: whole, the update
+  // turns it by 2 atan(0.01) (the Cayley rotation of rotation.h); in two parts each turns it by
+  // 2 atan(0.005), together within O(θ³) = 1e-6 of the whole. Each part turned by the whole spin would
+  // turn it twice as far.
+  Mat3 strain = Mat3::Zero(), spin = Mat3::Zero();
+  strain(0, 0) = 1.0;
+  spin(0, 1) = 0.02, spin(1, 0) = -0.02;
+  State start;
+  start.stress(0, 0) = 1000.0;
+  StepFailure log;
+  const CoarseFailingRotatingModel fails{0.0};
+  const State whole = CoarseFailingRotatingModel{2.0}.update(start, strain, spin);
+  const State parts = update_splitting_on_failure(CoarseFailingRotatingModel{0.6}, fails, start, strain, spin, log);
+  REQUIRE(log.fallback_updates() == 1);
+  const double angle = std::atan2(whole.stress(0, 1), whole.stress(0, 0));  // of the turned principal axis
+  CHECK(std::abs(angle) > 0.004);
+  CHECK((parts.stress - whole.stress).norm() < 1e-6 * 1000.0);
 }
 
 TEST_CASE("the fallback of a model with a choice of scheme is its substep twin", "[sph][stress]") {

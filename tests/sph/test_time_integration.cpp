@@ -1,6 +1,8 @@
 // The leapfrog with its half first kick and variable steps, the step clock, and the rest criterion.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "helpers.h"
 #include "sph/solver.h"
 
@@ -129,14 +131,13 @@ TEST_CASE("the CFL step falls with the flow speed", "[leapfrog]") {
 TEST_CASE("rest: a few movers are allowed, a sustained quiet is required", "[rest]") {
   RestCriterion c;
   c.speed = 0.01, c.duration = 0.05, c.fraction = 0.99;
-  CHECK(c.movers_allowed(2501) == 25);
+  CHECK(c.movers_allowed(2501) == 25);  // floor(0.01 * 2501)
   CHECK(c.movers_allowed(100) == 1);
   RestWatch watch(c);
   CHECK_FALSE(watch.at_rest(0.01, 0, 2501));  // not yet moved: a slow start is not rest
   CHECK_FALSE(watch.at_rest(0.09, 0, 2501));
   CHECK_FALSE(watch.at_rest(0.10, 26, 2501));  // too many movers: the soil moves
-  CHECK_FALSE(watch.at_rest(0.11, 25, 2501));  // quiet from 0.11 s ...
-  CHECK_FALSE(watch.at_rest(0.15, 3, 2501));
+  CHECK_FALSE(watch.at_rest(0.11, 3, 2501));   // quiet from 0.11 s ...
   CHECK_FALSE(watch.at_rest(0.155, 40, 2501));  // ... broken: starts again
   CHECK_FALSE(watch.at_rest(0.16, 0, 2501));
   CHECK_FALSE(watch.at_rest(0.2099, 0, 2501));
@@ -144,6 +145,49 @@ TEST_CASE("rest: a few movers are allowed, a sustained quiet is required", "[res
   c.enabled = false;
   RestWatch off(c);
   CHECK_FALSE(off.at_rest(10.0, 0, 2501));
+}
+
+// The thresholds themselves, at times exact in binary (0.25, 1, 1.25 s) so that t − since equals the
+// duration exactly: exactly the allowed number of movers is quiet (`moving > allowed` moves), and
+// quiet for exactly the duration is rest (`>= duration`).
+TEST_CASE("rest: exactly the allowed movers count as quiet, exactly the duration as rest", "[rest]") {
+  RestCriterion c;
+  c.speed = 0.01, c.duration = 0.25, c.fraction = 0.99;
+  REQUIRE(c.movers_allowed(2501) == 25);
+  SECTION("25 movers of 2501 start the quiet, and keep it") {
+    RestWatch watch(c);
+    CHECK_FALSE(watch.at_rest(0.5, 26, 2501));  // one more than allowed: moving
+    CHECK_FALSE(watch.at_rest(1.0, 25, 2501));  // the allowed number: quiet starts at 1 s
+    CHECK_FALSE(watch.at_rest(1.125, 25, 2501));
+    CHECK(watch.at_rest(1.25, 25, 2501));  // 0.25 s later, every step with 25 movers: rest
+  }
+  SECTION("26 movers of 2501 restart the quiet") {
+    RestWatch watch(c);
+    CHECK_FALSE(watch.at_rest(0.5, 26, 2501));
+    CHECK_FALSE(watch.at_rest(1.0, 0, 2501));
+    CHECK_FALSE(watch.at_rest(1.125, 26, 2501));  // moves again: the quiet of 1 s is lost
+    CHECK_FALSE(watch.at_rest(1.25, 0, 2501));    // quiet from 1.25 s
+    CHECK_FALSE(watch.at_rest(1.375, 0, 2501));
+    CHECK(watch.at_rest(1.5, 0, 2501));
+  }
+  SECTION("the allowed movers alone do not count as having moved") {
+    RestWatch watch(c);
+    for (const double t : {0.25, 0.5, 1.0, 2.0}) CHECK_FALSE(watch.at_rest(t, 25, 2501));
+    CHECK_FALSE(watch.memory().moved);
+    CHECK_FALSE(watch.at_rest(2.25, 26, 2501));
+    CHECK(watch.memory().moved);
+  }
+  SECTION("quiet for a step less than the duration is not rest") {
+    RestWatch watch(c);
+    CHECK_FALSE(watch.at_rest(0.5, 26, 2501));
+    CHECK_FALSE(watch.at_rest(1.0, 0, 2501));
+    CHECK_FALSE(watch.at_rest(std::nextafter(1.25, 0.0), 0, 2501));  // an ulp short of 0.25 s
+    CHECK(watch.at_rest(1.25, 0, 2501));
+  }
+  SECTION("a watch restored from a checkpoint's memory continues the quiet") {
+    RestWatch watch(c, {.moved = true, .since = 1.0});
+    CHECK(watch.at_rest(1.25, 0, 2501));
+  }
 }
 
 TEST_CASE("stop at rest: a column that never moves runs to its end time", "[rest][column]") {

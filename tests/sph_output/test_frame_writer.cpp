@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sph_output_fixtures.h"
+#include "../common/temp_dir.h"
 
 using namespace soilsph::sph;
 using soilsph::test::SyntheticParticles;
@@ -86,11 +87,10 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
+/// A directory not yet made, inside this test process's own temporary directory.
 std::filesystem::path fresh_directory(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("soilsph_test_" + name + "_" + std::to_string(getpid()));
-  std::filesystem::remove_all(dir);
-  return dir;
+  static const soilsph::testing::TempDir scratch("soilsph-frames");
+  return scratch / name;
 }
 
 }  // namespace

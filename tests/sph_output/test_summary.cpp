@@ -12,6 +12,7 @@
 #include <string>
 
 #include "sph/output/summary.h"
+#include "../common/temp_dir.h"
 
 using namespace soilsph::sph;
 
@@ -90,9 +91,8 @@ TEST_CASE("strings are JSON-escaped and non-finite numbers become null", "[summa
 }
 
 TEST_CASE("write_summary_json writes the text to the file, creating its folder", "[summary]") {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("soilsph_test_summary_" + std::to_string(getpid()));
-  std::filesystem::remove_all(dir);
+  const soilsph::testing::TempDir scratch("soilsph-summary");
+  const auto dir = scratch.path();
   const auto file = dir / "run" / "summary.json";
   write_summary_json(file, example());
   std::ifstream in(file);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "closed_form_fixtures.h"
+#include "constitutive/tensor.h"
 #include "verification/closed_form/drucker_prager_triaxial.h"
 #include "verification/point_test.h"
 
@@ -28,6 +29,23 @@ double alpha_psi(PlasticPotential potential, double psi_degrees) {
 double dilatancy_ratio(PlasticPotential potential, double psi_degrees) {
   const double a = alpha_psi(potential, psi_degrees);
   return -3.0 * a / (1.0 / std::sqrt(3.0) - a);
+}
+
+/// The same ratio without the hand derivation: the flow direction ∂g/∂σ of g = √J2 + α I1 by central
+/// differences at a triaxial compression stress (σ_a = −300 kPa, σ_r = −100 kPa, tension-positive),
+/// then dε_a = −∂g/∂σ_a and dε_v = −tr ∂g/∂σ (compression-positive).
+double numerical_dilatancy_ratio(double alpha) {
+  const auto g = [alpha](const Mat3& s) { return std::sqrt(second_deviatoric_invariant(s)) + alpha * s.trace(); };
+  Mat3 sigma = Mat3::Zero();
+  sigma.diagonal() << -300e3, -100e3, -100e3;
+  const double h = 1.0;  // Pa
+  double gradient[3];
+  for (int k = 0; k < 3; ++k) {
+    Mat3 up = sigma, down = sigma;
+    up(k, k) += h, down(k, k) -= h;
+    gradient[k] = (g(up) - g(down)) / (2.0 * h);
+  }
+  return -(gradient[0] + gradient[1] + gradient[2]) / -gradient[0];
 }
 
 DruckerPrager table1_with(PlasticPotential potential, double psi_degrees) {
@@ -63,10 +81,17 @@ TEST_CASE("the D-P closed forms of the dilatancy ratio: known values and the sig
   // The printed potential's axial rate 1/√3 − 3 sinψ vanishes at sinψ = 1/(3√3), ψ ≈ 11.1°.
   const double psi_zero = std::asin(1.0 / (3.0 * std::sqrt(3.0))) / kDegree;
   CHECK(psi_zero == Approx(11.0958).epsilon(1e-5));
-  CHECK(dilatancy_ratio(PaperEq20, 10.0) == Approx(-27.707).epsilon(1e-4));
+  // The hand-derived ratio against the potential's gradient taken numerically, for both potentials.
+  for (double psi : {0.0, 5.0, 10.0, 12.0, 20.0, 30.0}) {
+    INFO("psi = " << psi);
+    CHECK(dilatancy_ratio(PaperEq20, psi) ==
+          Approx(numerical_dilatancy_ratio(3.0 * std::sin(psi * kDegree))).epsilon(1e-6).margin(1e-9));
+    CHECK(dilatancy_ratio(Matched, psi) ==
+          Approx(numerical_dilatancy_ratio(alpha_psi(Matched, psi))).epsilon(1e-6).margin(1e-9));
+  }
+  CHECK(dilatancy_ratio(PaperEq20, 10.0) < -20.0);  // just below the sign change: a huge dilation
   CHECK(dilatancy_ratio(PaperEq20, 12.0) > 0.0);  // past the sign change: "dilation" compacts
   // The matched potential is finite and dilating for every ψ up to 90°: α_ψ ≤ 1/√12 < 1/√3.
-  CHECK(dilatancy_ratio(Matched, 10.0) == Approx(-0.33243).epsilon(1e-4));
   CHECK(alpha_psi(Matched, 89.999) < 1.0 / std::sqrt(12.0));
   // Plane strain with no out-of-plane plastic strain: the matched D-P flow dilates like Mohr–Coulomb
   // with ψ, dε_v^p / dγ_max^p = 3 α_ψ / √(1 − 3 α_ψ²) = sinψ.

@@ -11,6 +11,7 @@
 
 #include "constitutive/material.h"
 #include "soilsph/version.h"
+#include "../common/temp_dir.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -37,9 +38,8 @@ std::string read(const fs::path& path) {
 }
 
 struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("soilsph_point_cli_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
+  soilsph::testing::TempDir unique{"soilsph-point-cli"};
+  const fs::path& path = unique.path();
 };
 }  // namespace
 

@@ -10,6 +10,7 @@
 
 #include "constitutive/parameters.h"
 #include "../common/material_toml.h"
+#include "../common/temp_dir.h"
 #include "verification/programme/programme_file.h"
 
 using namespace soilsph;
@@ -33,7 +34,8 @@ double curve_difference(const PointCurve& a, const PointCurve& b) {
 }
 
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("soilsph_programme_" + name + ".toml");
+  static const soilsph::testing::TempDir dir("soilsph-programme");  // one per test process
+  const auto path = dir / (name + ".toml");
   std::ofstream(path) << text;
   return path;
 }

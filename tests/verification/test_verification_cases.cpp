@@ -6,6 +6,7 @@
 
 #include "constitutive/parameters.h"
 #include "verification/report/verification_case.h"
+#include "../common/temp_dir.h"
 
 using namespace soilsph;
 using namespace soilsph::verification;
@@ -17,7 +18,8 @@ const fs::path kCases = fs::path(SOILSPH_SOURCE_DIR) / "verification" / "cases";
 /// Writes a one-case file next to the shipped cases' materials (so relative paths resolve) and
 /// returns the ParameterError message of reading it ("" if it reads).
 std::string error_of(const std::string& body) {
-  const fs::path file = fs::temp_directory_path() / "soilsph-case-under-test.toml";
+  static const soilsph::testing::TempDir dir("soilsph-cases");  // one per test process
+  const fs::path file = dir / "soilsph-case-under-test.toml";
   std::ofstream(file) << "[[case]]\nname = \"x\"\nmaterial = \""
                       << (kCases / "materials" / "mcc-pressure-dependent.toml").string() << "\"\n"
                       << body;
