@@ -487,7 +487,7 @@ std::vector<Finding> check(const Case& c, const Outcome& o, const fs::path& dir)
     check_message(c, dir, o, f);
     if (c.expect == Expect::InputError && o.code == 1)
       f.push_back({"input-error-exit-1", "exit 1 for an input error (" + c.expect_why + "), expected 2"});
-    // Issue #10: the default K0 must be admissible for every valid material. (When the change of another
+    // The default K0 must be admissible for every valid material. (When the change of another
     // key, e.g. gravity = 1e308, is blamed on K0, that is message-missing-name, not this.)
     bool blamed_elsewhere = false;
     for (const Finding& g : f) blamed_elsewhere = blamed_elsewhere || g.category == "message-missing-name";

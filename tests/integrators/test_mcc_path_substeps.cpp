@@ -1,4 +1,4 @@
-// Issue #11 item 4 with the driver's sub-steps (verification/driver/path_substeps.h) and the
+// Our accuracy goal for the stiff clay with the driver's sub-steps (verification/driver/path_substeps.h) and the
 // controlled implicit (step-doubling estimate): MCC triaxial to ε_a = 0.1 in 20 increments from
 // p0 = 200 kPa, drained and undrained, NC and OCR 1.5, both elasticities, within 1e-3 of CVODE (the
 // independent reference: it holds the imposed stresses throughout and integrates the rate form).
