@@ -1,13 +1,13 @@
 #!/usr/bin/python3
 """Checks that every relative link of the repository's markdown resolves.
 
-    scripts/check_links.py [ROOT] [--allow-missing PATH ...]
+    scripts/check_links.py [ROOT]
 
 For each `*.md` under ROOT (default: the repository; build folders and .git skipped), every inline
 link and image `[text](target)` outside code blocks and code spans whose target is not a URL must
 name a file or folder that exists, relative to the markdown file; a `#fragment` into a markdown file
 must match one of its headings as GitHub spells anchors (lower case, punctuation dropped, spaces to
-hyphens). `--allow-missing PATH` (relative to ROOT) accepts links to a file that another branch adds.
+hyphens).
 Prints one line per broken link, `FILE:LINE: target (why)`, and exits 1 if there is any.
 """
 import argparse
@@ -73,7 +73,7 @@ def anchors(path, cache={}):
     return cache[path]
 
 
-def broken_links(root, allowed_missing):
+def broken_links(root):
     for path in markdown_files(root):
         for number, line in prose_lines(path.read_text(encoding="utf-8")):
             for match in LINK.finditer(line):
@@ -84,8 +84,7 @@ def broken_links(root, allowed_missing):
                 resolved = (path.parent / file_part).resolve() if file_part else path
                 where = f"{path.relative_to(root)}:{number}: {target}"
                 if not resolved.exists():
-                    if resolved not in allowed_missing:
-                        yield f"{where} (no such file)"
+                    yield f"{where} (no such file)"
                     continue
                 if fragment and resolved.suffix == ".md" and fragment not in anchors(resolved):
                     yield f"{where} (no heading with that anchor in {resolved.relative_to(root)})"
@@ -94,11 +93,9 @@ def broken_links(root, allowed_missing):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("root", nargs="?", default=pathlib.Path(__file__).resolve().parent.parent)
-    parser.add_argument("--allow-missing", action="append", default=[], metavar="PATH")
     args = parser.parse_args()
     root = pathlib.Path(args.root).resolve()
-    allowed = {(root / p).resolve() for p in args.allow_missing}
-    problems = list(broken_links(root, allowed))
+    problems = list(broken_links(root))
     for problem in problems:
         print(problem)
     files = sum(1 for _ in markdown_files(root))

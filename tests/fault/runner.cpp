@@ -265,7 +265,7 @@ RunReport run(const Config& config) {
   fs::create_directories(cases_dir);
 
   RunReport report;
-  // The time limit as on an idle machine, stretched by the load measured now (docs/fuzzing.md).
+  // The time limit as on an idle machine, stretched by the load measured now (docs/method/fuzzing.md).
   report.slowdown = measured_slowdown(config, cases_dir);
   const Limits case_limits = calibrated_limits(config.limits, report.slowdown);
   report.timeout_seconds = case_limits.timeout_seconds;
