@@ -410,8 +410,18 @@ void check_collapse_output(const Case& c, const fs::path& dir, const Outcome& o,
     if (it == j.end()) return std::nullopt;
     return to_number(it->second);
   };
+  const std::optional<toml::table> doc = effective_toml(c, dir);
+  // The deposit measures are null (undefined) exactly for a scene of regions without [deposit]: no
+  // frame to measure them from.
+  const bool deposit_undefined =
+      doc && !(*doc)["scene"]["column_width"] && !(*doc)["scene"]["column_height"] && !(*doc)["deposit"];
+  const auto deposit_measure = [](const std::string& key) {
+    return key == "runout_m" || key == "runout_thick_m" || key == "height_m" || key == "repose_angle_deg";
+  };
   for (const auto& [key, value] : j) {
-    if (value == "null" && key != "resumed_from")  // null there means "not resumed"
+    const bool may_be_null = key == "resumed_from"  // null there means "not resumed"
+                             || (deposit_undefined && deposit_measure(key));
+    if (value == "null" && !may_be_null)
       f.push_back({"collapse-output", "summary.json " + key + " is null (not finite)"});
     if (value.front() != '"' && value != "true" && value != "false" && value != "null" && !to_number(value))
       f.push_back({"collapse-output", "summary.json " + key + " = " + value + " is not a number"});
@@ -432,7 +442,6 @@ void check_collapse_output(const Case& c, const fs::path& dir, const Outcome& o,
                                         " s)"});
   if (!dt || !(*dt > 0) || !std::isfinite(*dt))
     f.push_back({"collapse-output", "time_step = " + (j.count("time_step") ? j.at("time_step") : "?")});
-  const std::optional<toml::table> doc = effective_toml(c, dir);
   if (doc) {
     const double scene_end = num(*doc, "scene", "end_time", NAN);
     const bool at_rest = j.count("stopped_at_rest") && j.at("stopped_at_rest") == "true";
