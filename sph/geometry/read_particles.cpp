@@ -8,26 +8,9 @@
 #include <utility>
 
 #include "constitutive/parameters.h"
+#include "sph/geometry/csv_fields.h"
 
 namespace soilsph::sph {
-
-namespace {
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> fields_of(std::string_view line) {
-  std::vector<std::string_view> fields;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(trimmed(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
-    if (comma == std::string_view::npos) return fields;
-    start = comma + 1;
-  }
-}
-}  // namespace
 
 std::vector<Region> read_particle_file(const std::string& path, const std::string& region_name, double dx,
                                        const std::string& scene_source,
@@ -41,7 +24,7 @@ std::vector<Region> read_particle_file(const std::string& path, const std::strin
   std::size_t line = 0;
   if (!std::getline(in, text)) fail(1, "empty file: expected the header x,y,region");
   ++line;
-  if (fields_of(text) != std::vector<std::string_view>{"x", "y", "region"})
+  if (csv_fields(text) != std::vector<std::string_view>{"x", "y", "region"})
     fail(line, "the header must be x,y,region (got \"" + std::string(trimmed(text)) + "\")");
   std::vector<Region> regions;
   std::vector<std::size_t> lines;  // each particle's line, for messages
@@ -49,7 +32,7 @@ std::vector<Region> read_particle_file(const std::string& path, const std::strin
   while (std::getline(in, text)) {
     ++line;
     if (trimmed(text).empty()) continue;
-    const std::vector<std::string_view> f = fields_of(text);
+    const std::vector<std::string_view> f = csv_fields(text);
     if (f.size() != 3) fail(line, "expected 3 fields x,y,region, got " + std::to_string(f.size()));
     double xy[2];
     for (int k = 0; k < 2; ++k) {

@@ -9,26 +9,11 @@
 #include <utility>
 
 #include "constitutive/parameters.h"
+#include "sph/geometry/csv_fields.h"
 
 namespace soilsph::sph {
 
 namespace {
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> fields_of(std::string_view line) {
-  std::vector<std::string_view> fields;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(trimmed(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
-    if (comma == std::string_view::npos) return fields;
-    start = comma + 1;
-  }
-}
-
 using Cell = std::array<long long, 3>;
 Cell cell_of(Vec3 p, double dx) {
   return {std::llround(std::floor(p.x / dx)), std::llround(std::floor(p.y / dx)),
@@ -48,7 +33,7 @@ std::vector<ParticleRegion3> read_particle_file_3d(const std::string& path, cons
   std::size_t line = 0;
   if (!std::getline(in, text)) fail(1, "empty file: expected the header x,y,z,region");
   ++line;
-  if (fields_of(text) != std::vector<std::string_view>{"x", "y", "z", "region"})
+  if (csv_fields(text) != std::vector<std::string_view>{"x", "y", "z", "region"})
     fail(line, "the header must be x,y,z,region (got \"" + std::string(trimmed(text)) + "\")");
   std::vector<ParticleRegion3> regions;
   std::map<Cell, std::vector<std::pair<Vec3, std::size_t>>> cells;  // for the closeness check
@@ -56,7 +41,7 @@ std::vector<ParticleRegion3> read_particle_file_3d(const std::string& path, cons
   while (std::getline(in, text)) {
     ++line;
     if (trimmed(text).empty()) continue;
-    const std::vector<std::string_view> f = fields_of(text);
+    const std::vector<std::string_view> f = csv_fields(text);
     if (f.size() != 4) fail(line, "expected 4 fields x,y,z,region, got " + std::to_string(f.size()));
     double xyz[3];
     for (std::size_t k = 0; k < 3; ++k) {
