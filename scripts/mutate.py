@@ -25,6 +25,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -230,14 +231,33 @@ def applicable(tree: Path, m: Mutant) -> bool:
     return path.exists() and path.read_text().count(m.find) == 1
 
 
+# A mutant can make a test print without end (a failed check in a loop): each command's output goes to
+# a file of its own limited to this size, and only its tail reaches the log.
+OUTPUT_LIMIT_BYTES = 64 << 20
+LOG_TAIL_BYTES = 64 << 10
+TIMED_OUT = -1000  # run()'s status for a command past its time limit (a signal gives -N)
+
+
+def limit_output_size() -> None:
+    resource.setrlimit(resource.RLIMIT_FSIZE, (OUTPUT_LIMIT_BYTES, OUTPUT_LIMIT_BYTES))
+
+
 def run(cmd: list[str], cwd: Path, timeout: float, log) -> tuple[int, float]:
     start = time.monotonic()
     log.write(f"$ {' '.join(cmd)}\n")
     log.flush()
-    try:
-        rc = subprocess.run(cmd, cwd=cwd, stdout=log, stderr=subprocess.STDOUT, timeout=timeout).returncode
-    except subprocess.TimeoutExpired:
-        rc = -1
+    with tempfile.TemporaryFile() as output:
+        try:
+            rc = subprocess.run(cmd, cwd=cwd, stdout=output, stderr=subprocess.STDOUT, timeout=timeout,
+                                preexec_fn=limit_output_size).returncode
+        except subprocess.TimeoutExpired:
+            rc = TIMED_OUT
+        size = output.seek(0, os.SEEK_END)
+        output.seek(max(0, size - LOG_TAIL_BYTES))
+        if size > LOG_TAIL_BYTES:
+            log.write(f"[... {size - LOG_TAIL_BYTES} bytes of output cut ...]\n")
+        log.write(output.read().decode(errors="replace"))
+    log.flush()
     return rc, time.monotonic() - start
 
 
@@ -368,7 +388,8 @@ def main() -> int:
                         rc, seconds = run(cmd, build, args.test_timeout, log)
                         test_s += seconds
                         if rc != 0:
-                            outcome = "killed" if rc > 0 else "killed (timeout)"
+                            outcome = ("killed (timeout)" if rc == TIMED_OUT
+                                       else "killed" if rc > 0 else f"killed (signal {-rc})")
                             break
             finally:
                 path.write_text(original)
