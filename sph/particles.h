@@ -1,13 +1,21 @@
 #pragma once
 /// @file
-/// The particles as a structure of arrays. Soil particles come first, [0, soil_count); the fixed
-/// boundary (ghost) particles follow, [soil_count, size()). Every array has size() entries except
-/// `state`, `layer` and `material`, which belong to the soil only.
+/// The particles as a structure of arrays, in 2 or 3 dimensions. Soil particles come first,
+/// [0, soil_count); the fixed boundary (ghost) particles follow, [soil_count, size()). Every array
+/// has size() entries except those marked soil only (soil_count entries) and boundary only
+/// (boundary_count() entries).
+///
+/// The plane's arrays are those of ParticlesOf<2>; space adds the z components (ThirdAxisArrays<3>):
+/// a 2D run has no z array at all, so its memory, checkpoints and loops are those of a plane-strain
+/// code. Generic stages read the third axis under `if constexpr (dim == 3)`.
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "constitutive/state.h"
 #include "sph/geometry/layout.h"
+#include "sph/geometry/vec3.h"
 
 namespace soilsph::sph {
 
@@ -16,27 +24,58 @@ namespace soilsph::sph {
 using BoundaryKind = WallKind;
 
 /// What particle j contributes to every pair term of the momentum equation, packed so that a pair
-/// reads one cache line of j instead of one line from each of seven arrays: σ/ρ², v^{n−½}, ρ^n, m,
-/// and whether j carries an artificial stress. Copied for every particle at the start of each step
-/// (stages/momentum.h, set_momentum_source); valid until the step changes σ, v or ρ.
-struct MomentumSource {
+/// reads one record of j instead of one line from each of many arrays: σ/ρ², v^{n−½}, ρ^n, m, and
+/// whether j carries an artificial stress. Copied for every particle at the start of each step
+/// (stages/momentum.h, set_momentum_source); valid until the step changes σ, v or ρ. 64 B in the
+/// plane (one cache line), 96 B in space.
+template <int dim>
+struct MomentumSourceOf;
+template <>
+struct MomentumSourceOf<2> {
   double sxx_rho2, syy_rho2, sxy_rho2;  ///< σ/ρ² (m²/s²)
   double vx, vy;                        ///< m/s
   double density, mass;
   bool tension;  ///< R ≠ 0 (stages/artificial_stress.h)
 };
+template <>
+struct MomentumSourceOf<3> {
+  double sxx_rho2, syy_rho2, szz_rho2, sxy_rho2, sxz_rho2, syz_rho2;
+  double vx, vy, vz;
+  double density, mass;
+  bool tension;
+};
+using MomentumSource = MomentumSourceOf<2>;
 
-struct Particles {
+/// The arrays of the third axis: none in the plane.
+template <int dim>
+struct ThirdAxisArrays {};
+template <>
+struct ThirdAxisArrays<3> {
+  std::vector<double> z, vz;            ///< every particle: position (m), velocity (m/s)
+  std::vector<double> szz, sxz, syz;    ///< every particle: stress (Pa)
+  std::vector<double> rzz, rxz, ryz;    ///< every particle: artificial stress / ρ² (m²/s²)
+  std::vector<double> az;               ///< soil: acceleration (m/s²)
+  std::vector<double> lxz, lyz, lzx, lzy, lzz;  ///< soil: velocity gradient ∂v^α/∂x^β (1/s)
+  std::vector<double> z0;               ///< soil: position at t = 0 (m)
+  std::vector<double> wall_nz, wall_vz;  ///< boundary: wall normal and velocity
+};
+
+template <int dim>
+  requires(dim == 2 || dim == 3)
+struct ParticlesOf : ThirdAxisArrays<dim> {
+  static constexpr int dimension = dim;
+  using Source = MomentumSourceOf<dim>;
+
   std::size_t soil_count = 0;  ///< soil particles are the first soil_count entries
 
   // Every particle (soil then boundary).
   std::vector<double> x, y;           ///< position (m)
   std::vector<double> vx, vy;         ///< velocity (m/s); at half steps for the soil (leapfrog)
   std::vector<double> density;        ///< kg/m³
-  std::vector<double> mass;           ///< kg per metre of thickness (plane strain)
-  std::vector<double> sxx, syy, sxy;  ///< in-plane stress used by the momentum equation (Pa)
+  std::vector<double> mass;           ///< kg; per metre of thickness in the plane (plane strain)
+  std::vector<double> sxx, syy, sxy;  ///< stress used by the momentum equation (Pa)
   std::vector<double> rxx, ryy, rxy;  ///< artificial stress (Gray et al. 2001), divided by ρ² (m²/s²)
-  std::vector<MomentumSource> momentum_source;  ///< per step, for the pairs of the momentum equation
+  std::vector<Source> momentum_source;  ///< per step, for the pairs of the momentum equation
 
   // Soil only.
   std::vector<double> ax, ay;              ///< acceleration (m/s²)
@@ -60,6 +99,33 @@ struct Particles {
   std::size_t boundary_count() const { return size() - soil_count; }
   bool is_soil(std::size_t i) const { return i < soil_count; }
 
+  /// The coordinate arrays (x, y[, z]), for the neighbour search.
+  std::array<std::span<const double>, dim> coordinates() const {
+    if constexpr (dim == 2)
+      return {x, y};
+    else
+      return {x, y, this->z};
+  }
+  /// The velocity arrays (vx, vy[, vz]).
+  std::array<std::vector<double>*, dim> velocity_arrays() {
+    if constexpr (dim == 2)
+      return {&vx, &vy};
+    else
+      return {&vx, &vy, &this->vz};
+  }
+  Vec<dim> position(std::size_t i) const {
+    if constexpr (dim == 2)
+      return {x[i], y[i]};
+    else
+      return {x[i], y[i], this->z[i]};
+  }
+  Vec<dim> velocity(std::size_t i) const {
+    if constexpr (dim == 2)
+      return {vx[i], vy[i]};
+    else
+      return {vx[i], vy[i], this->vz[i]};
+  }
+
   /// Calls f(name, array) for every array of doubles: first those of every particle, then those of
   /// the soil only (the one list that sizing, memory counts and checkpoints use).
   template <class F>
@@ -70,15 +136,25 @@ struct Particles {
   void for_each_array(F&& f) const {
     for_each_array_of(*this, f);
   }
-  static constexpr std::size_t kParticleArrays = 12;  ///< the first arrays for_each_array visits
+  /// The first arrays for_each_array visits (those of every particle).
+  static constexpr std::size_t kParticleArrays = dim == 2 ? 12 : 20;
+
+  /// Calls f(array) for every array of doubles of the boundary only.
+  template <class F>
+  void for_each_wall_array(F&& f) {
+    for_each_wall_array_of(*this, f);
+  }
+  template <class F>
+  void for_each_wall_array(F&& f) const {
+    for_each_wall_array_of(*this, f);
+  }
 
   /// Bytes held by the arrays.
   std::size_t bytes() const {
-    std::size_t b = state.capacity() * sizeof(State) + momentum_source.capacity() * sizeof(MomentumSource) +
+    std::size_t b = state.capacity() * sizeof(State) + momentum_source.capacity() * sizeof(Source) +
                     (layer.capacity() + material.capacity()) * sizeof(int) + boundary_kind.capacity() +
                     wall_id.capacity() * sizeof(int);
-    for (const auto* a : {&wall_nx, &wall_ny, &wall_vx, &wall_vy, &wall_friction, &wall_stick})
-      b += a->capacity() * sizeof(double);
+    for_each_wall_array([&](const std::vector<double>& a) { b += a.capacity() * sizeof(double); });
     for_each_array([&](const char*, const std::vector<double>& a) { b += a.capacity() * sizeof(double); });
     return b;
   }
@@ -88,24 +164,43 @@ struct Particles {
     soil_count = soil;
     std::size_t k = 0;
     for_each_array([&](const char*, std::vector<double>& a) { a.assign(k++ < kParticleArrays ? soil + boundary : soil, 0.0); });
-    momentum_source.assign(soil + boundary, MomentumSource{});
+    momentum_source.assign(soil + boundary, Source{});
     state.assign(soil, State{});
     layer.assign(soil, 0);
     material.assign(soil, 0);
     boundary_kind.assign(boundary, BoundaryKind::NoSlip);
-    for (auto* a : {&wall_nx, &wall_ny, &wall_vx, &wall_vy, &wall_friction, &wall_stick}) a->assign(boundary, 0.0);
+    for_each_wall_array([&](std::vector<double>& a) { a.assign(boundary, 0.0); });
     wall_id.assign(boundary, 0);
   }
 
  private:
   template <class Self, class F>
   static void for_each_array_of(Self& p, F& f) {
-    f("x", p.x), f("y", p.y), f("vx", p.vx), f("vy", p.vy), f("density", p.density), f("mass", p.mass);
-    f("sxx", p.sxx), f("syy", p.syy), f("sxy", p.sxy), f("rxx", p.rxx), f("ryy", p.ryy), f("rxy", p.rxy);
-    f("ax", p.ax), f("ay", p.ay), f("density_rate", p.density_rate);
-    f("lxx", p.lxx), f("lxy", p.lxy), f("lyx", p.lyx), f("lyy", p.lyy);
-    f("x0", p.x0), f("y0", p.y0);
+    if constexpr (dim == 2) {
+      f("x", p.x), f("y", p.y), f("vx", p.vx), f("vy", p.vy), f("density", p.density), f("mass", p.mass);
+      f("sxx", p.sxx), f("syy", p.syy), f("sxy", p.sxy), f("rxx", p.rxx), f("ryy", p.ryy), f("rxy", p.rxy);
+      f("ax", p.ax), f("ay", p.ay), f("density_rate", p.density_rate);
+      f("lxx", p.lxx), f("lxy", p.lxy), f("lyx", p.lyx), f("lyy", p.lyy);
+      f("x0", p.x0), f("y0", p.y0);
+    } else {
+      f("x", p.x), f("y", p.y), f("z", p.z), f("vx", p.vx), f("vy", p.vy), f("vz", p.vz);
+      f("density", p.density), f("mass", p.mass);
+      f("sxx", p.sxx), f("syy", p.syy), f("szz", p.szz), f("sxy", p.sxy), f("sxz", p.sxz), f("syz", p.syz);
+      f("rxx", p.rxx), f("ryy", p.ryy), f("rzz", p.rzz), f("rxy", p.rxy), f("rxz", p.rxz), f("ryz", p.ryz);
+      f("ax", p.ax), f("ay", p.ay), f("az", p.az), f("density_rate", p.density_rate);
+      f("lxx", p.lxx), f("lxy", p.lxy), f("lxz", p.lxz), f("lyx", p.lyx), f("lyy", p.lyy), f("lyz", p.lyz);
+      f("lzx", p.lzx), f("lzy", p.lzy), f("lzz", p.lzz);
+      f("x0", p.x0), f("y0", p.y0), f("z0", p.z0);
+    }
+  }
+  template <class Self, class F>
+  static void for_each_wall_array_of(Self& p, F& f) {
+    f(p.wall_nx), f(p.wall_ny), f(p.wall_vx), f(p.wall_vy), f(p.wall_friction), f(p.wall_stick);
+    if constexpr (dim == 3) f(p.wall_nz), f(p.wall_vz);
   }
 };
+
+/// The plane-strain solver's particles.
+using Particles = ParticlesOf<2>;
 
 }  // namespace soilsph::sph
