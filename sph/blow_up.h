@@ -22,7 +22,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "sph/geometry/vec2.h"
+#include "sph/geometry/vec3.h"
 #include "sph/particles.h"
 
 namespace soilsph::sph {
@@ -39,7 +39,34 @@ struct Domain {
   double x_min = -std::numeric_limits<double>::infinity(), x_max = std::numeric_limits<double>::infinity();
   double y_min = -std::numeric_limits<double>::infinity(), y_max = std::numeric_limits<double>::infinity();
   bool contains(double x, double y) const { return x >= x_min && x <= x_max && y >= y_min && y <= y_max; }
+  bool contains(Vec2 p) const { return contains(p.x, p.y); }
 };
+/// The domain of a dimension: the plane's Domain, space's box.
+template <int dim>
+using DomainOf = std::conditional_t<dim == 2, Domain, Box3>;
+
+/// "(x, y) m" or "(x, y, z) m".
+template <int dim>
+std::string position_text(const ParticlesOf<dim>& p, std::size_t i) {
+  std::ostringstream out;
+  const Vec<dim> x = p.position(i);
+  out << "(" << x.x << ", " << x.y;
+  if constexpr (dim == 3) out << ", " << x.z;
+  out << ") m";
+  return out.str();
+}
+/// "x min to max m, y …[, z …]".
+inline std::string domain_text(const Domain& d) {
+  std::ostringstream out;
+  out << "x " << d.x_min << " to " << d.x_max << " m, y " << d.y_min << " to " << d.y_max << " m";
+  return out.str();
+}
+inline std::string domain_text(const Box3& d) {
+  std::ostringstream out;
+  out << "x " << d.lo.x << " to " << d.hi.x << " m, y " << d.lo.y << " to " << d.hi.y << " m, z " << d.lo.z << " to "
+      << d.hi.z << " m";
+  return out.str();
+}
 
 /// The hint every message ends with: what usually makes an SPH step unstable.
 inline constexpr const char* kBlowUpHint =
@@ -48,52 +75,62 @@ inline constexpr const char* kBlowUpHint =
 
 /// True if particle i's close-of-step state is sane: speed² v2 at most c², density finite and
 /// positive, inside the domain. NaN fails every comparison, so a non-finite value is never sane.
-inline bool particle_sane(const Particles& p, std::size_t i, double v2, double c2, const Domain& domain) {
-  return v2 <= c2 && p.density[i] > 0.0 && std::isfinite(p.density[i]) && domain.contains(p.x[i], p.y[i]);
+template <int dim>
+bool particle_sane(const ParticlesOf<dim>& p, std::size_t i, double v2, double c2, const DomainOf<dim>& domain) {
+  return v2 <= c2 && p.density[i] > 0.0 && std::isfinite(p.density[i]) && domain.contains(p.position(i));
 }
 
 /// What is insane about particle i (particle_sane() is false): the message naming it.
-inline std::string particle_blow_up(const Particles& p, std::size_t i, double sound_speed, const Domain& domain) {
-  const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
-  const bool finite = std::isfinite(p.x[i] + p.y[i] + v2 + p.density[i]);
-  const bool fast = v2 > sound_speed * sound_speed, outside = !domain.contains(p.x[i], p.y[i]);
+template <int dim>
+std::string particle_blow_up(const ParticlesOf<dim>& p, std::size_t i, double sound_speed, const DomainOf<dim>& domain) {
+  const Vec<dim> x = p.position(i), v = p.velocity(i);
+  const double v2 = dot(v, v);
+  const bool finite = std::isfinite(dot(x, x) + v2 + p.density[i]);
+  const bool fast = v2 > sound_speed * sound_speed, outside = !domain.contains(x);
   std::ostringstream out;
-  out << "blow-up: soil particle " << i << " at (" << p.x[i] << ", " << p.y[i] << ") m";
+  out << "blow-up: soil particle " << i << " at " << position_text(p, i);
   if (!finite)
     out << " has a non-finite position, velocity or density";
   else if (fast)
     out << " moves at " << std::sqrt(v2) << " m/s, faster than the P-wave speed c = " << sound_speed << " m/s";
   else if (outside)
-    out << " left the domain x " << domain.x_min << " to " << domain.x_max << " m, y " << domain.y_min << " to "
-        << domain.y_max << " m (a soil that runs past the floor's far end needs a longer [scene] floor_length)";
+    out << " left the domain " << domain_text(domain)
+        << " (a soil that runs past the floor's far end needs a longer [scene] floor_length)";
   else
     out << " has density " << p.density[i] << " kg/m^3";
   return out.str() + kBlowUpHint;
 }
 
 /// Where an energy blow-up shows most: "the fastest soil particle, i at (x, y) m, moves at v m/s".
-inline std::string fastest_particle(const Particles& p, std::size_t i) {
+template <int dim>
+std::string fastest_particle(const ParticlesOf<dim>& p, std::size_t i) {
   std::ostringstream out;
-  out << "the fastest soil particle, " << i << " at (" << p.x[i] << ", " << p.y[i] << ") m, moves at "
-      << std::hypot(p.vx[i], p.vy[i]) << " m/s";
+  out << "the fastest soil particle, " << i << " at " << position_text(p, i) << ", moves at " << norm(p.velocity(i))
+      << " m/s";
   return out.str();
 }
 
-/// The energy a run may never exceed in kinetic energy (J per metre of thickness): the soil's
+/// The energy a run may never exceed in kinetic energy (J; per metre of thickness in the plane): the soil's
 /// potential energy |g| (height − datum) along −g above the lowest wall, its elastic energy
 /// ½ σ:C:σ V and its kinetic energy now; of the soil particles [begin, end), by default all.
-template <class Elastic>
-double energy_budget(const Particles& p, const Elastic& elasticity, Vec2 gravity, double datum, std::size_t begin = 0,
-                     std::size_t end = std::numeric_limits<std::size_t>::max()) {
+template <int dim, class Elastic>
+double energy_budget(const ParticlesOf<dim>& p, const Elastic& elasticity, Vec<dim> gravity, double datum,
+                     std::size_t begin = 0, std::size_t end = std::numeric_limits<std::size_t>::max()) {
   end = std::min(end, p.soil_count);
   const double g = norm(gravity);
-  const Vec2 down = g > 0.0 ? Vec2{gravity.x / g, gravity.y / g} : Vec2{0.0, -1.0};
+  Vec<dim> down{};
+  down.y = -1.0;
+  if (g > 0.0) {
+    down.x = gravity.x / g, down.y = gravity.y / g;
+    if constexpr (dim == 3) down.z = gravity.z / g;
+  }
   double e = 0.0;
   for (std::size_t i = begin; i < end; ++i) {
     const double volume = p.mass[i] / p.density[i];
     const Mat3& sigma = p.state[i].stress;
-    const double height = -(down.x * p.x[i] + down.y * p.y[i]);
-    e += p.mass[i] * (g * (height - datum) + 0.5 * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i])) +
+    const double height = -dot(down, p.position(i));
+    const Vec<dim> v = p.velocity(i);
+    e += p.mass[i] * (g * (height - datum) + 0.5 * dot(v, v)) +
          0.5 * volume * ddot(sigma, elasticity.at(mean_pressure(sigma)).compliance(sigma));
   }
   return e;

@@ -23,13 +23,35 @@ namespace soilsph::sph {
 /// output. The mirroring reads the ghost's friction coefficient instead (stages/boundaries.h).
 using BoundaryKind = WallKind;
 
+/// Components of a symmetric tensor of the dimension: 3 in the plane (xx, yy, xy), 6 in space.
+template <int dim>
+inline constexpr int kSymmetricComponents = dim == 2 ? 3 : 6;
+
+/// Where component (a, b) of a symmetric tensor of the dimension is kept: the diagonal first, then
+/// xy (plane); xy, xz, yz (space), as the particles' stress arrays are listed.
+template <int dim>
+constexpr int symmetric_index(int a, int b) {
+  if (a == b) return a;
+  if constexpr (dim == 2)
+    return 2;
+  else
+    return a + b + 2;  // (0,1) → 3, (0,2) → 4, (1,2) → 5
+}
+
 /// What particle j contributes to every pair term of the momentum equation, packed so that a pair
 /// reads one record of j instead of one line from each of many arrays: σ/ρ², v^{n−½}, ρ^n, m, and
 /// whether j carries an artificial stress. Copied for every particle at the start of each step
-/// (stages/momentum.h, set_momentum_source); valid until the step changes σ, v or ρ. 64 B in the
-/// plane (one cache line), 96 B in space.
+/// (stages/momentum.h, set_momentum_source); valid until the step changes σ, v or ρ. 96 B in space;
+/// in the plane 64 B (one cache line), with named scalars: GCC 12 vectorises the plane's row sum
+/// across pairs for this record and across components for one of arrays, which sums in another
+/// order and would change the plane's results in their last bits.
 template <int dim>
-struct MomentumSourceOf;
+struct MomentumSourceOf {
+  std::array<double, kSymmetricComponents<dim>> stress_rho2;  ///< σ/ρ² (m²/s²), symmetric_index order
+  std::array<double, dim> v;                                  ///< m/s
+  double density, mass;
+  bool tension;  ///< R ≠ 0 (stages/artificial_stress.h)
+};
 template <>
 struct MomentumSourceOf<2> {
   double sxx_rho2, syy_rho2, sxy_rho2;  ///< σ/ρ² (m²/s²)
@@ -37,13 +59,7 @@ struct MomentumSourceOf<2> {
   double density, mass;
   bool tension;  ///< R ≠ 0 (stages/artificial_stress.h)
 };
-template <>
-struct MomentumSourceOf<3> {
-  double sxx_rho2, syy_rho2, szz_rho2, sxy_rho2, sxz_rho2, syz_rho2;
-  double vx, vy, vz;
-  double density, mass;
-  bool tension;
-};
+static_assert(sizeof(MomentumSourceOf<2>) == 64 && sizeof(MomentumSourceOf<3>) == 96);
 using MomentumSource = MomentumSourceOf<2>;
 
 /// The arrays of the third axis: none in the plane.

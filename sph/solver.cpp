@@ -49,7 +49,8 @@ double potential_datum(const Scene& scene) {
 }
 }  // namespace
 
-MaterialGroups material_groups(const std::vector<Material>& materials, const Particles& p) {
+template <int dim>
+MaterialGroups material_groups(const std::vector<Material>& materials, const ParticlesOf<dim>& p) {
   MaterialGroups groups;
   std::size_t begin = 0;
   for (std::size_t k = 0; k < materials.size(); ++k) {
@@ -65,6 +66,8 @@ MaterialGroups material_groups(const std::vector<Material>& materials, const Par
     throw std::logic_error("material_groups: the soil particles are not ordered by material (initial_state.h)");
   return groups;
 }
+template MaterialGroups material_groups(const std::vector<Material>&, const ParticlesOf<2>&);
+template MaterialGroups material_groups(const std::vector<Material>&, const ParticlesOf<3>&);
 
 SolverSetup make_solver_setup(const Scene& scene) {
   const Geometry& g = scene.geometry;

@@ -43,6 +43,7 @@
 #include "sph/stages/continuity.h"
 #include "sph/stages/leapfrog.h"
 #include "sph/stages/momentum.h"
+#include "sph/stages/plane_guard.h"
 #include "sph/stages/stress_update.h"
 #include "sph/stages/velocity_gradient.h"
 #include "sph/thread_tuner.h"
@@ -60,49 +61,61 @@ struct MaterialGroup {
 using MaterialGroups = std::vector<MaterialGroup>;
 
 /// The groups of the soil's materials (Particles::material, contiguous per material).
-MaterialGroups material_groups(const std::vector<Material>& materials, const Particles& p);
+template <int dim>
+MaterialGroups material_groups(const std::vector<Material>& materials, const ParticlesOf<dim>& p);
+
+/// The wall guard of a dimension: the plane's segments, space's planes.
+template <int dim>
+using WallGuardOf = std::conditional_t<dim == 2, WallGuard, PlaneGuard>;
 
 /// Everything fixed for a run, derived from the scene once.
-struct SolverSetup {
-  CubicSpline kernel;
+template <int dim>
+struct SolverSetupOf {
+  CubicSplineKernel<dim> kernel;
   double cfl;          ///< C in Δt = C h / (c + |v|_max)
   double sound_speed;  ///< c at the start (m/s); also the artificial viscosity's c̄
   double end_time;     ///< s
   double frame_interval;
-  MomentumParams momentum;
-  WallGuard guard;
+  MomentumParamsOf<dim> momentum;
+  WallGuardOf<dim> guard;
   WallMotions walls;            ///< moving and removed walls (stages/boundaries.h)
   double potential_datum = 0.0; ///< height of the lowest wall along −g (m), for the energy budget
   bool velocity_gradient_correction = false;  ///< stages/velocity_gradient.h
   bool pressure_dependent_stiffness = false;  ///< recompute c from the pressures at each search
   RestCriterion rest;
-  Domain domain;                    ///< no soil particle may leave it (blow_up.h)
+  DomainOf<dim> domain;             ///< no soil particle may leave it (blow_up.h)
   double checkpoint_interval = 0.0;  ///< s of simulated time between checkpoints (0: none at intervals)
   double constant_stiffness_sound_speed = 0.0;  ///< the largest c of the materials of constant stiffness
-  Vec2 ghost_body_force{};  ///< body force per mass the ghosts' normal stress balances (m/s²; 0: none)
+  Vec<dim> ghost_body_force{};  ///< body force per mass the ghosts' normal stress balances (m/s²; 0: none)
 
   /// Δt of the soil at rest with the initial sound speed: the largest step the run takes while c
   /// does not fall.
   double initial_time_step() const { return cfl_time_step(cfl, kernel.smoothing_length(), sound_speed); }
 };
 
+using SolverSetup = SolverSetupOf<2>;
+
 /// Derives the kernel, the time step and the stage parameters from the scene (sph/solver.cpp).
 SolverSetup make_solver_setup(const Scene& scene);
 
 /// The state inside a step at t^n, after the acceleration and before anything changes σ, v or the
 /// pairs: what the histories sample (output/history_writer.h; analysis/boundary_forces.h, gauges.h).
-struct StepSample {
-  double time;                               ///< t^n (s)
-  const Particles& particles;                ///< x^n, σ^n, v^{n−½}
-  const NeighbourList& neighbours;           ///< the pairs at x^n
-  const MomentumParams& momentum;            ///< the parameters of the acceleration just computed
-  std::span<const double> vx_next, vy_next;  ///< v^{n+½}
+template <int dim>
+struct StepSampleOf {
+  double time;                                   ///< t^n (s)
+  const ParticlesOf<dim>& particles;             ///< x^n, σ^n, v^{n−½}
+  const PairList<dim>& neighbours;               ///< the pairs at x^n
+  const MomentumParamsOf<dim>& momentum;         ///< the parameters of the acceleration just computed
+  std::array<std::span<const double>, dim> v_next;  ///< v^{n+½} (vx, vy[, vz])
 };
+using StepSample = StepSampleOf<2>;
 
 /// Reusable work space of the loop (no allocation after the first step).
-struct Workspace {
-  NeighbourList neighbours;
-  std::vector<double> vx_next, vy_next, density_next;  ///< v^{n+½}, ρ^{n+1} while a step computes them
+template <int dim>
+struct WorkspaceOf {
+  PairList<dim> neighbours;
+  std::array<std::vector<double>, dim> v_next;  ///< v^{n+½} while a step computes it
+  std::vector<double> density_next;             ///< ρ^{n+1} while a step computes it
   std::vector<double> volume;  ///< m/ρ^n of every particle, for eq 23 (one division per particle, not per pair)
   std::atomic<bool> any_tension{false};  ///< a particle carries artificial stress this step (loop 1 → 2)
   double previous_dt = 0.0;  ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
@@ -116,7 +129,7 @@ struct Workspace {
   std::exception_ptr error;           ///< a failed neighbour search
   double energy_budget = std::numeric_limits<double>::infinity();  ///< J/m the kinetic energy may not exceed
   std::string blow_up;  ///< what the close of the last step found insane (blow_up.h); empty: nothing
-  std::function<void(const StepSample&)> sampler;  ///< called inside the steps that sample (RunControl)
+  std::function<void(const StepSampleOf<dim>&)> sampler;  ///< called inside the steps that sample (RunControl)
   bool sample_due = false;  ///< this step samples; changed only between steps (every thread reads it)
   double sample_time = 0.0;  ///< t^n of the last sample
   /// The cuts of the loops over soil rows that differ in cost per particle (range_balancer.h):
@@ -124,8 +137,22 @@ struct Workspace {
   RangeBalancer prepare_balance, momentum_balance;
   std::vector<RangeBalancer> stress_balance;
 
-  Workspace(const SolverSetup& setup, const Particles& p)
-      : vx_next(p.vx), vy_next(p.vy), density_next(p.density), volume(p.size()), sound_speed(setup.sound_speed) {}
+  WorkspaceOf(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& p)
+      : density_next(p.density), volume(p.size()), sound_speed(setup.sound_speed) {
+    const auto v = velocities(p);
+    for (int a = 0; a < dim; ++a) v_next[a].assign(v[a].begin(), v[a].end());
+  }
+  /// v^{n+½} as spans, for the stages that read or write it.
+  std::array<std::span<double>, dim> v_next_spans() {
+    std::array<std::span<double>, dim> v;
+    for (int a = 0; a < dim; ++a) v[a] = v_next[a];
+    return v;
+  }
+  std::array<std::span<const double>, dim> v_next_spans() const {
+    std::array<std::span<const double>, dim> v;
+    for (int a = 0; a < dim; ++a) v[a] = v_next[a];
+    return v;
+  }
   bool failed() const { return failure.failed() || error; }
   /// Sizes the balancers for a parallel region of `threads` over `groups` material groups (serial).
   void use_threads(int threads, std::size_t groups) {
@@ -140,6 +167,7 @@ struct Workspace {
     for (RangeBalancer& b : stress_balance) b.rebalance();
   }
 };
+using Workspace = WorkspaceOf<2>;
 
 namespace detail {
 /// Calls f(model, fallback, begin, end) for every group, with its model's own type.
@@ -156,7 +184,8 @@ void for_each_group(const MaterialGroups& groups, F&& f) {
 
 /// The largest P-wave speed of the soil now: each pressure-dependent material's over its own
 /// particles at their pressure, and the constant-stiffness materials' fixed one.
-inline double current_sound_speed(const MaterialGroups& groups, const SolverSetup& setup, const Particles& p) {
+template <int dim>
+double current_sound_speed(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& p) {
   double c = setup.constant_stiffness_sound_speed;
   for (const MaterialGroup& group : groups)
     if (group.pressure_dependent)
@@ -168,9 +197,11 @@ inline double current_sound_speed(const MaterialGroups& groups, const SolverSetu
 /// The serial end of a step: swap in v^{n+½} and ρ^{n+1}, the wall guard, the step's largest speed
 /// and number of moving particles, whether the next step must search neighbours, and the blow-up
 /// checks (blow_up.h) in the same pass over the soil.
-inline void close_step(const MaterialGroups& groups, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
-  std::swap(p.vx, work.vx_next);
-  std::swap(p.vy, work.vy_next);
+template <int dim>
+void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p,
+                WorkspaceOf<dim>& work, double dt) {
+  const auto velocity = p.velocity_arrays();
+  for (int a = 0; a < dim; ++a) std::swap(*velocity[a], work.v_next[a]);
   std::swap(p.density, work.density_next);
   setup.walls.advance(p, work.time, dt);
   work.time += dt;
@@ -181,7 +212,8 @@ inline void close_step(const MaterialGroups& groups, const SolverSetup& setup, P
   double v2_max = 0.0, kinetic = 0.0;
   std::size_t moving = 0, first_insane = p.soil_count, fastest = 0;
   for (std::size_t i = 0; i < p.soil_count; ++i) {
-    const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+    const Vec<dim> v = p.velocity(i);
+    const double v2 = dot(v, v);
     if (v2 > v2_max) v2_max = v2, fastest = i;
     moving += v2 > rest2;
     kinetic += 0.5 * p.mass[i] * v2;
@@ -192,16 +224,17 @@ inline void close_step(const MaterialGroups& groups, const SolverSetup& setup, P
   if (first_insane < p.soil_count) {
     work.blow_up = particle_blow_up(p, first_insane, work.sound_speed, setup.domain);
   } else if (!(kinetic <= work.energy_budget)) {
+    const std::string unit = dim == 2 ? " J/m" : " J";
     work.blow_up = "blow-up: the kinetic energy " + std::to_string(kinetic) +
-                   " J/m exceeds all the energy the soil held at the start, " +
-                   std::to_string(work.energy_budget) + " J/m (potential, elastic, kinetic); " +
+                   unit + " exceeds all the energy the soil held at the start, " +
+                   std::to_string(work.energy_budget) + unit + " (potential, elastic, kinetic); " +
                    fastest_particle(p, fastest) + kBlowUpHint;
   } else if (pushed > std::max<std::size_t>(10, p.soil_count / 100)) {
     work.blow_up = "blow-up: the wall guard pushed " + std::to_string(pushed) +
                    " soil particles back through a wall in one step" + kBlowUpHint;
   }
   if (!work.blow_up.empty()) return;  // a search on such positions would fail or exhaust memory
-  work.search_next = work.neighbours.search_needed(p.x, p.y);
+  work.search_next = work.neighbours.search_needed(p.coordinates());
   if (setup.pressure_dependent_stiffness && work.search_next) work.sound_speed = current_sound_speed(groups, setup, p);
 }
 }  // namespace detail
@@ -209,10 +242,10 @@ inline void close_step(const MaterialGroups& groups, const SolverSetup& setup, P
 /// One leapfrog step of length dt from t^n to t^{n+1} (stages/leapfrog.h), then `on_closed()` on
 /// one thread; each group's `fallback` takes over a failed stress update (stages/stress_update.h).
 /// Call from every thread of a parallel region, or outside one.
-template <class OnClosed>
-void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Particles& p, Workspace& work, double dt,
-                    OnClosed&& on_closed) {
-  NeighbourList& nl = work.neighbours;
+template <int dim, class OnClosed>
+void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p,
+                    WorkspaceOf<dim>& work, double dt, OnClosed&& on_closed) {
+  PairList<dim>& nl = work.neighbours;
   const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
   const auto& m = setup.momentum;
   const double kick_dt = kick_interval(work.previous_dt, dt);
@@ -233,7 +266,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
   };
   if (work.search_next) {
     try {
-      nl.search(p.x, p.y, setup.kernel, p.soil_count);  // every thread throws alike, or none
+      nl.search(p.coordinates(), setup.kernel, p.soil_count);  // every thread throws alike, or none
     } catch (...) {
 #pragma omp critical(soilsph_search_failure)
       if (!work.error) work.error = std::current_exception();
@@ -247,7 +280,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
     //    row costs several ghost rows) and no thread waits between the two halves (nowait: the
     //    ghosts read only what the soil rows do not write).
     const auto prepare = [&](std::size_t i) {
-      nl.fill_row(i, p.x, p.y, setup.kernel);
+      nl.fill_row(i, p.coordinates(), setup.kernel);
       if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i, setup.ghost_body_force);
       work.volume[i] = particle_volume(p, i);
       if (m.artificial_stress.enabled() && set_artificial_stress(p, i, m.artificial_stress.epsilon()))
@@ -260,18 +293,21 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
     //    Each particle's own ρ and σ, whatever its material: no interface model (docs/reference/scenes.md).
     const bool any_tension = work.any_tension.load(std::memory_order_relaxed);  // after loop 1's barrier
+    const auto acceleration = acceleration_arrays(p);
+    const auto velocity = p.velocity_arrays();
     balanced(work.momentum_balance, 0, p.soil_count, [&](std::size_t i) {
-      const Acceleration a = acceleration_of(p, nl, m, i, any_tension);
-      p.ax[i] = a.x, p.ay[i] = a.y;
-      work.vx_next[i] = p.vx[i] + kick_dt * a.x;
-      work.vy_next[i] = p.vy[i] + kick_dt * a.y;
+      const AccelerationOf<dim> a = acceleration_of(p, nl, m, i, any_tension);
+      for (int k = 0; k < dim; ++k) {
+        (*acceleration[k])[i] = a[k];
+        work.v_next[k][i] = (*velocity[k])[i] + kick_dt * a[k];
+      }
     });
 #pragma omp barrier
     if (work.sample_due) {
 #pragma omp single
       try {
         work.sample_time = work.time;
-        work.sampler({work.time, p, nl, m, work.vx_next, work.vy_next});
+        work.sampler({work.time, p, nl, m, std::as_const(work).v_next_spans()});
       } catch (...) {
         work.error = std::current_exception();
       }
@@ -279,7 +315,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
     // 3. Ghosts take v^{n+½}.
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = soil; s < all; ++s)
-      mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.vx_next, work.vy_next);
+      mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.v_next_spans());
     // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
     //    stage of this loop reads x or σ of a neighbour: the pairs hold x_i − x_j). One loop per
     //    material, its model chosen once here by every thread alike. The groups are disjoint: one
@@ -287,12 +323,13 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
     std::size_t group = 0;
     detail::for_each_group(groups, [&](const auto& model, const auto& fallback, std::size_t begin, std::size_t end) {
       balanced(work.stress_balance[group++], begin, end, [&](std::size_t i) {
-        const KinematicRates rates =
-            kinematic_rates_of(p, nl, i, work.vx_next, work.vy_next, work.volume, setup.velocity_gradient_correction);
+        const KinematicRatesOf<dim> rates = kinematic_rates_of(p, nl, i, std::as_const(work).v_next_spans(),
+                                                               work.volume, setup.velocity_gradient_correction);
         update_particle_stress(model, fallback, p, i, rates.L, dt, work.failure);
         work.density_next[i] = p.density[i] + dt * rates.density_rate;
-        p.x[i] += dt * work.vx_next[i];
-        p.y[i] += dt * work.vy_next[i];
+        p.x[i] += dt * work.v_next[0][i];
+        p.y[i] += dt * work.v_next[1][i];
+        if constexpr (dim == 3) p.z[i] += dt * work.v_next[2][i];
       });
     });
 #pragma omp barrier
@@ -307,8 +344,8 @@ void advance_groups(const MaterialGroups& groups, const SolverSetup& setup, Part
 }
 
 /// One group over the whole soil with one model (tests).
-template <class Model>
-MaterialGroups single_material(const Model& model, const Particles& p) {
+template <class Model, int dim>
+MaterialGroups single_material(const Model& model, const ParticlesOf<dim>& p) {
   bool pressure_dependent = false;
   if constexpr (requires { model.elasticity(); })
     pressure_dependent = model.elasticity().kind() == Elasticity::Kind::PressureDependent;
@@ -316,8 +353,9 @@ MaterialGroups single_material(const Model& model, const Particles& p) {
 }
 
 /// One step of the whole soil with one model and its own fallback, without a callback (tests).
-template <class Model>
-void advance(const Model& model, const SolverSetup& setup, Particles& p, Workspace& work, double dt) {
+template <class Model, int dim>
+void advance(const Model& model, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p, WorkspaceOf<dim>& work,
+             double dt) {
   const MaterialGroups groups = single_material(model, p);
   work.use_threads(1, groups.size());
   advance_groups(groups, setup, p, work, dt, [] {});
@@ -348,10 +386,16 @@ struct RunStatistics {
 /// the output settings cannot change the solution.
 class StepClock {
  public:
-  explicit StepClock(const SolverSetup& setup) : setup_(setup), next_frame_(setup.frame_interval) {}
+  /// The clock of a run of `setup` (either dimension's SolverSetupOf).
+  template <class Setup>
+  explicit StepClock(const Setup& setup)
+      : cfl_(setup.cfl), h_(setup.kernel.smoothing_length()), end_time_(setup.end_time),
+        frame_interval_(setup.frame_interval), next_frame_(setup.frame_interval) {}
   /// A clock at time t whose next frame is due at next_frame (a resumed run).
-  StepClock(const SolverSetup& setup, double t, double next_frame)
-      : setup_(setup), t_(t), next_frame_(next_frame) {}
+  template <class Setup>
+  StepClock(const Setup& setup, double t, double next_frame) : StepClock(setup) {
+    t_ = t, next_frame_ = next_frame;
+  }
 
   double time() const { return t_; }
   double next_frame() const { return next_frame_; }
@@ -359,8 +403,8 @@ class StepClock {
   bool shortened() const { return dt_ < cfl_dt_; }
   /// The length of the next step for the current sound speed and largest speed.
   double next_step(double sound_speed, double max_speed) {
-    cfl_dt_ = cfl_time_step(setup_.cfl, setup_.kernel.smoothing_length(), sound_speed, max_speed);
-    const double remaining = setup_.end_time - t_;
+    cfl_dt_ = cfl_time_step(cfl_, h_, sound_speed, max_speed);
+    const double remaining = end_time_ - t_;
     lands_ = cfl_dt_ >= remaining * (1.0 - 1e-12);
     dt_ = lands_ ? remaining : (cfl_dt_ > 0.5 * remaining ? 0.5 * remaining : cfl_dt_);
     return dt_;
@@ -369,18 +413,18 @@ class StepClock {
   double cfl_step() const { return cfl_dt_; }
   /// Advances the time by the step taken; true if a frame is due at the new time.
   bool step_taken() {
-    t_ = lands_ ? setup_.end_time : t_ + dt_;  // the end exactly, without accumulated round-off
+    t_ = lands_ ? end_time_ : t_ + dt_;  // the end exactly, without accumulated round-off
     if (t_ < next_frame_ - 0.5 * dt_ && !lands_) return false;
     // The first multiple of the interval beyond this step (not repeated additions, which stop
     // advancing when the interval is below the round-off of the time).
-    const double interval = setup_.frame_interval;
+    const double interval = frame_interval_;
     next_frame_ = std::max(next_frame_, interval * (std::floor((t_ + 0.5 * dt_) / interval) + 1.0));
     return true;
   }
-  bool at_end() const { return t_ >= setup_.end_time; }
+  bool at_end() const { return t_ >= end_time_; }
 
  private:
-  const SolverSetup& setup_;
+  double cfl_, h_, end_time_, frame_interval_;
   double t_ = 0.0, dt_ = 0.0, cfl_dt_ = 0.0, next_frame_;
   bool lands_ = false;
 };
@@ -395,27 +439,38 @@ struct LoopState {
   double max_speed = 0.0;    ///< largest soil speed after the last step (m/s)
   std::size_t moving = 0;    ///< soil particles faster than the rest speed after the last step
   RestWatch::Memory rest;
-  std::vector<double> search_x, search_y;  ///< every particle's position at the last neighbour search
+  std::vector<double> search_x, search_y, search_z;  ///< every particle's position at the last neighbour search (z: space only)
 };
 
+/// The positions of the neighbour search a LoopState saved.
+template <int dim>
+Coordinates<dim> searched_positions(const LoopState& state) {
+  if constexpr (dim == 2)
+    return {state.search_x, state.search_y};
+  else
+    return {state.search_x, state.search_y, state.search_z};
+}
+
 /// What a caller can do to a run besides watching its frames and steps.
-struct RunControl {
+template <int dim>
+struct RunControlOf {
   /// Polled after every step (serial): true stops the run there, as at its end (a signal).
   std::function<bool()> stop_requested;
   /// Called with the state to continue from: every checkpoint_interval of simulated time, when the
   /// run stops at rest or on request, and before the steps that are shortened to land on the end
   /// time (so that a run continued from it to a later end time steps exactly as one that never
   /// stopped). Serial; the particles hold the state of the LoopState's time.
-  std::function<void(const Particles&, const LoopState&)> checkpoint;
+  std::function<void(const ParticlesOf<dim>&, const LoopState&)> checkpoint;
   /// Continue from this state (the particles must hold the state saved with it): no frame at its
   /// time, which the run that saved it wrote if one was due.
   const LoopState* resume = nullptr;
   /// Called (serially, inside the step) at the first step that starts at or after `first_sample` and
   /// then at the first step starting at or after each later multiple of `sample_interval` (s).
-  std::function<void(const StepSample&)> on_sample;
+  std::function<void(const StepSampleOf<dim>&)> on_sample;
   double sample_interval = 0.0;
   double first_sample = 0.0;
 };
+using RunControl = RunControlOf<2>;
 
 /// Runs to the end time, or until the soil is at rest if the scene asks for it, or until `control`
 /// asks it to stop. Calls on_frame(particles, t) at t = 0 (not when resuming), every frame interval
@@ -423,13 +478,14 @@ struct RunControl {
 /// search is rethrown after the region: IntegrationError naming the particle, BlowUp (blow_up.h),
 /// or the search's std::runtime_error, each with the step and time added. `tuner` picks the threads
 /// of each chunk of steps (sph/thread_tuner.h); by default the OpenMP maximum throughout.
-template <class OnFrame, class OnStep>
-RunStatistics run_groups(const MaterialGroups& groups, const SolverSetup& setup, Particles& p, OnFrame&& on_frame,
-                         OnStep&& on_step, ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false),
-                         const RunControl& control = {}) {
+template <int dim, class OnFrame, class OnStep>
+RunStatistics run_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p,
+                         OnFrame&& on_frame, OnStep&& on_step,
+                         ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false),
+                         const RunControlOf<dim>& control = {}) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  Workspace work(setup, p);
+  WorkspaceOf<dim> work(setup, p);
   const LoopState* resume = control.resume;
   StepClock clock = resume ? StepClock(setup, resume->stats.end_time, resume->next_frame) : StepClock(setup);
   RestWatch rest = resume ? RestWatch(setup.rest, resume->rest) : RestWatch(setup.rest);
@@ -444,8 +500,8 @@ RunStatistics run_groups(const MaterialGroups& groups, const SolverSetup& setup,
     setup.walls.set_velocities(p, work.time);
     work.failure.restore_fallback_updates(stats.fallback_stress_updates);
     // The same candidates as the run that saved the state: the search from the same positions.
-    work.neighbours.search(resume->search_x, resume->search_y, setup.kernel, p.soil_count);
-    work.search_next = work.neighbours.search_needed(p.x, p.y);
+    work.neighbours.search(searched_positions<dim>(*resume), setup.kernel, p.soil_count);
+    work.search_next = work.neighbours.search_needed(p.coordinates());
   }
   work.energy_budget = 0.0;
   detail::for_each_group(groups, [&](const auto& model, const auto&, std::size_t begin, std::size_t end) {
@@ -471,6 +527,7 @@ RunStatistics run_groups(const MaterialGroups& groups, const SolverSetup& setup,
                     {}};
     state.search_x = work.neighbours.search_x();
     state.search_y = work.neighbours.search_y();
+    if constexpr (dim == 3) state.search_z = work.neighbours.search_positions(2);
     control.checkpoint(p, state);
   };
   std::exception_ptr error;
@@ -558,15 +615,16 @@ RunStatistics run_groups(const MaterialGroups& groups, const SolverSetup& setup,
 
   if (error) std::rethrow_exception(error);
   stats = statistics_now();
-  stats.workspace_bytes =
-      work.neighbours.bytes_per_particle() * p.size() + 4 * p.size() * sizeof(double);  // the *_next buffers, volume
+  stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
+                          (dim + 2) * p.size() * sizeof(double);  // the *_next buffers, volume
   return stats;
 }
 
 /// The same with one model for the whole soil (tests).
-template <class Model, class OnFrame, class OnStep>
-RunStatistics run(const Model& model, const SolverSetup& setup, Particles& p, OnFrame&& on_frame, OnStep&& on_step,
-                  ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false), const RunControl& control = {}) {
+template <class Model, int dim, class OnFrame, class OnStep>
+RunStatistics run(const Model& model, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p, OnFrame&& on_frame,
+                  OnStep&& on_step, ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false),
+                  const RunControlOf<dim>& control = {}) {
   return run_groups(single_material(model, p), setup, p, std::forward<OnFrame>(on_frame),
                     std::forward<OnStep>(on_step), tuner, control);
 }

@@ -36,8 +36,8 @@ inline double cfl_time_step(double cfl, double smoothing_length, double sound_sp
 }
 
 /// The largest P-wave speed of the soil particles [begin, end) at their current pressure and density.
-inline double largest_p_wave_speed(const Elasticity& elasticity, const Particles& p, std::size_t begin,
-                                   std::size_t end) {
+template <int dim>
+double largest_p_wave_speed(const Elasticity& elasticity, const ParticlesOf<dim>& p, std::size_t begin, std::size_t end) {
   double c = 0.0;
   for (std::size_t i = begin; i < end; ++i)
     c = std::max(c, p_wave_speed(elasticity.at(mean_pressure(p.state[i].stress)), p.density[i]));

@@ -44,7 +44,7 @@ void Histories::operator()(const StepSample& s) {
   const std::vector<Vec2> all = boundary_forces(s.particles, s.neighbours, s.momentum, scene_.geometry.layout.walls.size());
   std::vector<Vec2> forces;
   for (const std::size_t w : walls_) forces.push_back(all[w]);
-  writer_->write(s.time, forces, gauges_.read(s.particles, s.vx_next, s.vy_next));
+  writer_->write(s.time, forces, gauges_.read(s.particles, s.v_next[0], s.v_next[1]));
 }
 
 }  // namespace soilsph::sph

@@ -12,6 +12,8 @@
 #include <optional>
 #include <utility>
 
+#include <Eigen/Eigenvalues>
+
 #include "sph/kernel.h"
 #include "sph/particles.h"
 #include "sph/stages/kernel_ratio_power.h"
@@ -23,7 +25,8 @@ class ArtificialStress {
  public:
   ArtificialStress() = default;
   /// ε, n, and the kernel and Δp that f = W / W(Δp) is taken of.
-  ArtificialStress(double epsilon, double exponent, const CubicSpline& kernel, double particle_spacing)
+  template <class Kernel>
+  ArtificialStress(double epsilon, double exponent, const Kernel& kernel, double particle_spacing)
       : epsilon_(epsilon),
         f_power_(std::in_place, exponent, kernel.value(particle_spacing), kernel.value(0.0)) {}
 
@@ -37,16 +40,48 @@ class ArtificialStress {
   std::optional<KernelRatioPower> f_power_;
 };
 
-/// Whether particle i has a nonzero R: its principal parts are both ≤ 0, so R ≠ 0 exactly when R_xx or
-/// R_yy is.
-inline bool carries_artificial_stress(const Particles& p, std::size_t i) {
-  return p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
+/// Whether particle i has a nonzero R: its principal parts are all ≤ 0 (R is negative
+/// semi-definite), so R ≠ 0 exactly when a diagonal component is.
+template <int dim>
+bool carries_artificial_stress(const ParticlesOf<dim>& p, std::size_t i) {
+  if constexpr (dim == 2)
+    return p.rxx[i] != 0.0 || p.ryy[i] != 0.0;
+  else
+    return p.rxx[i] != 0.0 || p.ryy[i] != 0.0 || p.rzz[i] != 0.0;
 }
 
-/// R of particle i (already divided by ρ²) into p.rxx, p.ryy, p.rxy. A particle without a tensile
-/// principal stress, σ_max = (σxx + σyy)/2 + √(((σxx − σyy)/2)² + σxy²) ≤ 0 (most of a soil mass),
-/// gets R = 0 without the principal-axes rotation. Returns whether R ≠ 0.
-inline bool set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
+/// R of particle i in space (already divided by ρ²) into p.rxx … p.ryz. A particle whose stress is
+/// negative semi-definite by Gershgorin's theorem (every diagonal entry plus the absolute row's
+/// off-diagonal entries ≤ 0: a soil under compression with little shear, most of a mass) gets R = 0
+/// without a decomposition. Returns whether R ≠ 0.
+inline bool set_artificial_stress(ParticlesOf<3>& p, std::size_t i, double epsilon) {
+  const double xx = p.sxx[i], yy = p.syy[i], zz = p.szz[i], xy = p.sxy[i], xz = p.sxz[i], yz = p.syz[i];
+  const auto zero = [&] {
+    p.rxx[i] = p.ryy[i] = p.rzz[i] = p.rxy[i] = p.rxz[i] = p.ryz[i] = 0.0;
+    return false;
+  };
+  if (xx + std::abs(xy) + std::abs(xz) <= 0.0 && yy + std::abs(xy) + std::abs(yz) <= 0.0 &&
+      zz + std::abs(xz) + std::abs(yz) <= 0.0)
+    return zero();
+  Eigen::Matrix3d sigma;
+  sigma << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(sigma);
+  const Eigen::Vector3d principal = eigen.eigenvalues();
+  if (principal.maxCoeff() <= 0.0) return zero();
+  const double scale = -epsilon / (p.density[i] * p.density[i]);
+  const Eigen::Vector3d r = principal.unaryExpr([&](double s) { return s > 0.0 ? scale * s : 0.0; });
+  const Eigen::Matrix3d& v = eigen.eigenvectors();
+  const Eigen::Matrix3d R = v * r.asDiagonal() * v.transpose();
+  p.rxx[i] = R(0, 0), p.ryy[i] = R(1, 1), p.rzz[i] = R(2, 2);
+  p.rxy[i] = R(0, 1), p.rxz[i] = R(0, 2), p.ryz[i] = R(1, 2);
+  return carries_artificial_stress(p, i);
+}
+
+/// R of particle i in the plane (already divided by ρ²) into p.rxx, p.ryy, p.rxy. A particle without
+/// a tensile principal stress, σ_max = (σxx + σyy)/2 + √(((σxx − σyy)/2)² + σxy²) ≤ 0 (most of a
+/// soil mass), gets R = 0 without the principal-axes rotation. Returns whether R ≠ 0.
+inline bool set_artificial_stress(ParticlesOf<2>& p, std::size_t i, double epsilon) {
   const double sxx = p.sxx[i], syy = p.syy[i], sxy = p.sxy[i];
   const double centre = 0.5 * (sxx + syy), half_difference = 0.5 * (sxx - syy);
   const double radius2 = half_difference * half_difference + sxy * sxy;  // of Mohr's circle
@@ -72,8 +107,9 @@ inline bool set_artificial_stress(Particles& p, std::size_t i, double epsilon) {
   return carries_artificial_stress(p, i);
 }
 
-/// Fills p.rxx, p.ryy, p.rxy for every particle, soil and boundary (one thread).
-inline void compute_artificial_stress(Particles& p, double epsilon) {
+/// Fills the artificial stress of every particle, soil and boundary (one thread).
+template <int dim>
+void compute_artificial_stress(ParticlesOf<dim>& p, double epsilon) {
   for (std::size_t i = 0; i < p.size(); ++i) set_artificial_stress(p, i, epsilon);
 }
 

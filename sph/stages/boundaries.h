@@ -62,82 +62,130 @@
 #include <vector>
 
 #include "sph/geometry/layout.h"
+#include "sph/geometry/wall_mirror.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
+#include "sph/stages/pair_vectors.h"
+#include "sph/stages/velocity_gradient.h"
 
 namespace soilsph::sph {
 
 /// The slip speed along a frictional wall (m/s) below which the soil may stick (see above).
 inline constexpr double kStickSlip = 1e-4;
 
-/// Sets ghost b's stress, density and stick flag from the soil (σ^n, ρ^n, before the momentum
-/// equation), the normal stress balancing the body force per mass `body` (see above).
-inline void mirror_stress_onto_ghost(Particles& p, const NeighbourList& nl, std::size_t b, Vec2 body = {}) {
-  double sum_w = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, rho = 0.0, vx = 0.0, vy = 0.0;
-  double mx = 0.0, my = 0.0;  // Σ_j W_bj ρ_j (x_b − x_j)
-  nl.for_each_pair(b, [&](const NeighbourList::Pair& q) {  // soil: no boundary–boundary pairs
-    sum_w += q.w;
-    mx += q.w * p.density[q.j] * q.rx;
-    my += q.w * p.density[q.j] * q.ry;
-    sxx += q.w * p.sxx[q.j];
-    syy += q.w * p.syy[q.j];
-    sxy += q.w * p.sxy[q.j];
-    rho += q.w * p.density[q.j];
-    vx += q.w * p.vx[q.j];
-    vy += q.w * p.vy[q.j];
+/// The kernel (Shepard) averages of ghost b's soil neighbours: Σ_j W_bj and the W-weighted sums of
+/// the stress (symmetric_index order), ρ, v and ρ (x_b − x_j).
+template <int dim>
+struct ShepardSums {
+  double weight = 0.0, density = 0.0;
+  std::array<double, kSymmetricComponents<dim>> stress{};
+  std::array<double, dim> velocity{}, density_offset{};
+};
+template <int dim>
+ShepardSums<dim> shepard_sums(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t b) {
+  ShepardSums<dim> sums;
+  const auto stress = stress_arrays(p);
+  const auto velocity = velocities(p);
+  for_each_pair_vectors(p, nl, b, [&](const PairVectors<dim>& q) {  // soil: no boundary–boundary pairs
+    sums.weight += q.w;
+    for (int a = 0; a < dim; ++a) sums.density_offset[a] += q.w * p.density[q.j] * q.r[a];
+    for (int k = 0; k < kSymmetricComponents<dim>; ++k) sums.stress[k] += q.w * (*stress[k])[q.j];
+    sums.density += q.w * p.density[q.j];
+    for (int a = 0; a < dim; ++a) sums.velocity[a] += q.w * velocity[a][q.j];
   });
-  if (sum_w <= 0.0) {
-    p.sxx[b] = p.syy[b] = p.sxy[b] = 0.0;
-    return;
-  }
-  const std::size_t g = b - p.soil_count;
-  const double nx = p.wall_nx[g], ny = p.wall_ny[g], tx = -ny, ty = nx, mu = p.wall_friction[g];
-  sxx /= sum_w, syy /= sum_w, sxy /= sum_w;
-  const double s_nn = nx * (sxx * nx + sxy * ny) + ny * (sxy * nx + syy * ny);
-  const double s_nt = nx * (sxx * tx + sxy * ty) + ny * (sxy * tx + syy * ty);
-  const double limit = mu < std::numeric_limits<double>::infinity() ? mu * std::max(-s_nn, 0.0)
-                                                                    : std::numeric_limits<double>::infinity();
-  double tau = std::clamp(s_nt, -limit, limit);
-  double stick = std::abs(s_nt) < limit ? 1.0 : 0.0;
-  if (limit > 0.0 && limit < std::numeric_limits<double>::infinity()) {  // frictional (and compressed)
-    // Kinetic Coulomb friction: while the soil slips along the wall the traction is the limit
-    // against the slip (τ has the sign of Δv_t, see above), whatever shear the soil has built.
-    const double slip = (vx / sum_w - p.wall_vx[g]) * tx + (vy / sum_w - p.wall_vy[g]) * ty;
-    if (std::abs(slip) > kStickSlip) tau = std::copysign(limit, slip), stick = 0.0;
-  }
-  const double change = (2.0 * tau - s_nt) - s_nt;  // σ_b,nt − σ̄_nt
-  p.wall_stick[g] = stick;
-  p.sxx[b] = sxx + change * (2.0 * nx * tx);
-  p.syy[b] = syy + change * (2.0 * ny * ty);
-  p.sxy[b] = sxy + change * (nx * ty + tx * ny);
-  const double delta = -(body.x * nx + body.y * ny) * (mx * nx + my * ny) / sum_w;  // Δ above
-  p.sxx[b] += delta * nx * nx;
-  p.syy[b] += delta * ny * ny;
-  p.sxy[b] += delta * nx * ny;
-  p.density[b] = rho / sum_w;
+  return sums;
 }
 
-/// Sets ghost b's velocity in (vx, vy) from the soil velocities in the same arrays (for the
-/// viscosity, the velocity gradient and eq 11).
-inline void mirror_velocity_onto_ghost(const Particles& p, const NeighbourList& nl, std::size_t b,
-                                       std::span<double> vx, std::span<double> vy) {
-  double sum_w = 0.0, vx_sum = 0.0, vy_sum = 0.0;
-  nl.for_each_pair(b, [&](const NeighbourList::Pair& q) {
-    sum_w += q.w;
-    vx_sum += q.w * vx[q.j];
-    vy_sum += q.w * vy[q.j];
-  });
+/// Sets ghost b's stress, density and stick flag from the soil (σ^n, ρ^n, before the momentum
+/// equation), the normal stress balancing the body force per mass `body` (see above). In space the
+/// mirror is geometry/wall_mirror.h's, the same rules with the tangential traction and slip as vectors.
+template <int dim>
+void mirror_stress_onto_ghost(ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t b, Vec<dim> body = {}) {
+  const ShepardSums<dim> sums = shepard_sums(p, nl, b);
+  const double sum_w = sums.weight;
+  const auto stress = stress_arrays(p);
   if (sum_w <= 0.0) {
-    vx[b] = vy[b] = 0.0;
+    for (auto* s : stress) (*s)[b] = 0.0;
     return;
   }
   const std::size_t g = b - p.soil_count;
-  const double nx = p.wall_nx[g], ny = p.wall_ny[g], tx = -ny, ty = nx, s = p.wall_stick[g];
-  const double v_x = vx_sum / sum_w, v_y = vy_sum / sum_w;
-  const double dvx = v_x - p.wall_vx[g], dvy = v_y - p.wall_vy[g];
-  const double dn = dvx * nx + dvy * ny, dt = dvx * tx + dvy * ty;
-  vx[b] = v_x - 2.0 * dn * nx - 2.0 * s * dt * tx;
-  vy[b] = v_y - 2.0 * dn * ny - 2.0 * s * dt * ty;
+  const double mu = p.wall_friction[g];
+  if constexpr (dim == 2) {
+    const double nx = p.wall_nx[g], ny = p.wall_ny[g], tx = -ny, ty = nx;
+    const double sxx = sums.stress[0] / sum_w, syy = sums.stress[1] / sum_w, sxy = sums.stress[2] / sum_w;
+    const double s_nn = nx * (sxx * nx + sxy * ny) + ny * (sxy * nx + syy * ny);
+    const double s_nt = nx * (sxx * tx + sxy * ty) + ny * (sxy * tx + syy * ty);
+    const double limit = mu < std::numeric_limits<double>::infinity() ? mu * std::max(-s_nn, 0.0)
+                                                                      : std::numeric_limits<double>::infinity();
+    double tau = std::clamp(s_nt, -limit, limit);
+    double stick = std::abs(s_nt) < limit ? 1.0 : 0.0;
+    if (limit > 0.0 && limit < std::numeric_limits<double>::infinity()) {  // frictional (and compressed)
+      // Kinetic Coulomb friction: while the soil slips along the wall the traction is the limit
+      // against the slip (τ has the sign of Δv_t, see above), whatever shear the soil has built.
+      const double slip =
+          (sums.velocity[0] / sum_w - p.wall_vx[g]) * tx + (sums.velocity[1] / sum_w - p.wall_vy[g]) * ty;
+      if (std::abs(slip) > kStickSlip) tau = std::copysign(limit, slip), stick = 0.0;
+    }
+    const double change = (2.0 * tau - s_nt) - s_nt;  // σ_b,nt − σ̄_nt
+    p.wall_stick[g] = stick;
+    p.sxx[b] = sxx + change * (2.0 * nx * tx);
+    p.syy[b] = syy + change * (2.0 * ny * ty);
+    p.sxy[b] = sxy + change * (nx * ty + tx * ny);
+    const double delta =
+        -(body.x * nx + body.y * ny) * (sums.density_offset[0] * nx + sums.density_offset[1] * ny) / sum_w;  // Δ
+    p.sxx[b] += delta * nx * nx;
+    p.syy[b] += delta * ny * ny;
+    p.sxy[b] += delta * nx * ny;
+  } else {
+    const Vec3 n{p.wall_nx[g], p.wall_ny[g], p.wall_nz[g]};
+    Eigen::Matrix3d mean;
+    const double xx = sums.stress[0] / sum_w, yy = sums.stress[1] / sum_w, zz = sums.stress[2] / sum_w,
+                 xy = sums.stress[3] / sum_w, xz = sums.stress[4] / sum_w, yz = sums.stress[5] / sum_w;
+    mean << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+    const Vec3 relative{sums.velocity[0] / sum_w - p.wall_vx[g], sums.velocity[1] / sum_w - p.wall_vy[g],
+                        sums.velocity[2] / sum_w - p.wall_vz[g]};
+    const WallShear shear = wall_shear(mean, n, relative, mu, kStickSlip);
+    p.wall_stick[g] = shear.stick;
+    const Vec3 offset{sums.density_offset[0], sums.density_offset[1], sums.density_offset[2]};
+    const double delta = -dot(body, n) * dot(offset, n) / sum_w;  // Δ above
+    const Eigen::Vector3d nn{n.x, n.y, n.z};
+    const Eigen::Matrix3d ghost = ghost_stress(mean, n, shear.traction) + delta * nn * nn.transpose();
+    p.sxx[b] = ghost(0, 0), p.syy[b] = ghost(1, 1), p.szz[b] = ghost(2, 2);
+    p.sxy[b] = ghost(0, 1), p.sxz[b] = ghost(0, 2), p.syz[b] = ghost(1, 2);
+  }
+  p.density[b] = sums.density / sum_w;
+}
+
+/// Sets ghost b's velocity in v from the soil velocities in the same arrays (for the viscosity, the
+/// velocity gradient and eq 11).
+template <int dim>
+void mirror_velocity_onto_ghost(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t b,
+                                const MutableVelocitySpans<dim>& v) {
+  double sum_w = 0.0;
+  std::array<double, dim> sum{};
+  nl.for_each_pair(b, [&](const typename PairList<dim>::Pair& q) {
+    sum_w += q.w;
+    for (int a = 0; a < dim; ++a) sum[a] += q.w * v[a][q.j];
+  });
+  if (sum_w <= 0.0) {
+    for (int a = 0; a < dim; ++a) v[a][b] = 0.0;
+    return;
+  }
+  const std::size_t g = b - p.soil_count;
+  const double s = p.wall_stick[g];
+  if constexpr (dim == 2) {
+    const double nx = p.wall_nx[g], ny = p.wall_ny[g], tx = -ny, ty = nx;
+    const double v_x = sum[0] / sum_w, v_y = sum[1] / sum_w;
+    const double dvx = v_x - p.wall_vx[g], dvy = v_y - p.wall_vy[g];
+    const double dn = dvx * nx + dvy * ny, dt = dvx * tx + dvy * ty;
+    v[0][b] = v_x - 2.0 * dn * nx - 2.0 * s * dt * tx;
+    v[1][b] = v_y - 2.0 * dn * ny - 2.0 * s * dt * ty;
+  } else {
+    const Vec3 ghost = ghost_velocity({sum[0] / sum_w, sum[1] / sum_w, sum[2] / sum_w},
+                                      {p.wall_vx[g], p.wall_vy[g], p.wall_vz[g]},
+                                      {p.wall_nx[g], p.wall_ny[g], p.wall_nz[g]}, s);
+    v[0][b] = ghost.x, v[1][b] = ghost.y, v[2][b] = ghost.z;
+  }
 }
 
 /// The friction coefficient μ a ghost of this wall mirrors with (see above).
@@ -158,7 +206,9 @@ struct WallMotions {
   bool any = false;                 ///< some wall moves or is removed after t = 0
 
   /// Moves the ghosts over [t, t + dt] and sets their wall velocity and mass for time t + dt (serial).
-  void advance(Particles& p, double t, double dt) const {
+  /// A motion is in the plane of x and y (in space, the walls of an extruded scene slide in it).
+  template <int dim>
+  void advance(ParticlesOf<dim>& p, double t, double dt) const {
     if (!any) return;
     for (std::size_t g = 0; g < p.boundary_count(); ++g) {
       const WallMotion& m = motions[static_cast<std::size_t>(p.wall_id[g])];
@@ -170,7 +220,8 @@ struct WallMotions {
     set_velocities(p, t + dt);
   }
   /// The wall velocity of every ghost at time t (the velocity of the motion it is in, if any).
-  void set_velocities(Particles& p, double t) const {
+  template <int dim>
+  void set_velocities(ParticlesOf<dim>& p, double t) const {
     if (!any) return;
     for (std::size_t g = 0; g < p.boundary_count(); ++g) {
       const WallMotion& m = motions[static_cast<std::size_t>(p.wall_id[g])];

@@ -12,13 +12,14 @@
 
 namespace soilsph::sph {
 
-/// Fills p.density_rate for every soil particle from p.vx, p.vy (orphaned OpenMP loop).
-inline void compute_density_rate(Particles& p, const NeighbourList& nl) {
+/// Fills p.density_rate for every soil particle from its velocities (orphaned OpenMP loop).
+template <int dim>
+void compute_density_rate(ParticlesOf<dim>& p, const PairList<dim>& nl) {
   const auto n = static_cast<std::ptrdiff_t>(p.soil_count);
 #pragma omp for schedule(static)
   for (std::ptrdiff_t s = 0; s < n; ++s) {
     const auto i = static_cast<std::size_t>(s);
-    p.density_rate[i] = kinematic_rates_of(p, nl, i, p.vx, p.vy, false).density_rate;
+    p.density_rate[i] = kinematic_rates_of(p, nl, i, velocities(p), false).density_rate;
   }
 }
 

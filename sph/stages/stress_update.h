@@ -108,23 +108,34 @@ State update_splitting_on_failure(const Model& model, const Model& fallback, con
   return stress_free;
 }
 
-/// σ^{n+1} of soil particle i for the velocity gradient L over dt, and its in-plane stress copied
-/// for the momentum stage; a failed update is recorded and leaves the particle unchanged. A material
-/// with a viscoplastic relaxation time relaxes towards the model's update (viscoplastic_relaxation.h).
-template <class Model>
-void update_particle_stress(const Model& model, const Model& fallback, Particles& p, std::size_t i,
-                            const VelocityGradient& L, double dt, StepFailure& failure) {
+/// The z coordinate of particle i: 0 in the plane.
+template <int dim>
+double z_coordinate(const ParticlesOf<dim>& p, std::size_t i) {
+  if constexpr (dim == 2)
+    return 0.0;
+  else
+    return p.z[i];
+}
+
+/// σ^{n+1} of soil particle i for the velocity gradient L over dt, and the stress the momentum stage
+/// reads (in-plane in the plane, all six components in space) copied from it; a failed update is
+/// recorded and leaves the particle unchanged. A material with a viscoplastic relaxation time relaxes
+/// towards the model's update (viscoplastic_relaxation.h).
+template <class Model, int dim>
+void update_particle_stress(const Model& model, const Model& fallback, ParticlesOf<dim>& p, std::size_t i,
+                            const VelocityGradientOf<dim>& L, double dt, StepFailure& failure) {
   try {
     const Mat3 strain = L.strain_increment(dt), spin = L.spin_increment(dt);
     State next;
     if constexpr (requires { model.update(p.state[i], strain, spin, UmatCall{}); }) {
       // A UMAT plug-in learns where and when it is called: NOEL the particle (from 1), DTIME the step,
-      // CELENT the particle's spacing √(m/ρ) (plane strain: m per metre of thickness).
+      // CELENT the particle's spacing: √(m/ρ) in the plane (m per metre of thickness), ∛(m/ρ) in space.
+      const double volume = p.mass[i] / p.density[i];
       next = model.update(p.state[i], strain, spin,
                           UmatCall{.element = static_cast<int>(i) + 1,
                                    .time_increment = dt,
-                                   .characteristic_length = std::sqrt(p.mass[i] / p.density[i]),
-                                   .coordinates = Vec3(p.x[i], p.y[i], 0.0)});
+                                   .characteristic_length = dim == 2 ? std::sqrt(volume) : std::cbrt(volume),
+                                   .coordinates = soilsph::Vec3(p.x[i], p.y[i], z_coordinate(p, i))});
     } else {
       next = update_splitting_on_failure(model, fallback, p.state[i], strain, spin, failure);
     }
@@ -139,12 +150,13 @@ void update_particle_stress(const Model& model, const Model& fallback, Particles
   }
   const Mat3& sigma = p.state[i].stress;
   p.sxx[i] = sigma(0, 0), p.syy[i] = sigma(1, 1), p.sxy[i] = sigma(0, 1);
+  if constexpr (dim == 3) p.szz[i] = sigma(2, 2), p.sxz[i] = sigma(0, 2), p.syz[i] = sigma(1, 2);
 }
 
 /// Every soil particle's state after dt from the stored velocity gradient (p.lxx …); throws
 /// IntegrationError for the first failed update. Not for use inside a parallel region.
-template <class Model>
-void update_stress(const Model& model, Particles& p, double dt) {
+template <class Model, int dim>
+void update_stress(const Model& model, ParticlesOf<dim>& p, double dt) {
   const auto n = static_cast<std::ptrdiff_t>(p.soil_count);
   StepFailure failure;
   const Model fallback = fallback_model(model);

@@ -51,7 +51,7 @@ struct ObliqueWall {
   }
   void mirror_stress(Vec2 body = {}) { mirror_stress_onto_ghost(p, nl, kGhost, body); }
   Vec2 mirrored_velocity() {
-    mirror_velocity_onto_ghost(p, nl, kGhost, p.vx, p.vy);
+    mirror_velocity_onto_ghost(p, nl, kGhost, {p.vx, p.vy});
     return {p.vx[kGhost], p.vy[kGhost]};
   }
   void check_stress(double sxx, double syy, double sxy) const {
@@ -171,7 +171,7 @@ TEST_CASE("ghost mirror: a ghost without soil neighbours carries no stress and n
   mirror_stress_onto_ghost(p, far, ObliqueWall::kGhost);
   CHECK(p.sxx[ObliqueWall::kGhost] == 0.0);
   CHECK(p.density[ObliqueWall::kGhost] == 1234.0);
-  mirror_velocity_onto_ghost(p, far, ObliqueWall::kGhost, p.vx, p.vy);
+  mirror_velocity_onto_ghost(p, far, ObliqueWall::kGhost, {p.vx, p.vy});
   CHECK(p.vx[ObliqueWall::kGhost] == 0.0);
   CHECK(p.vy[ObliqueWall::kGhost] == 0.0);
 }

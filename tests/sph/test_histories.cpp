@@ -47,7 +47,7 @@ std::vector<Sample> sampled_run(const Scene& scene) {
       sample.weight_less_inertia.x += p.mass[i] * (s.momentum.gravity.x - p.ax[i]);
       sample.weight_less_inertia.y += p.mass[i] * (s.momentum.gravity.y - p.ay[i]);
     }
-    sample.gauges = gauges.read(p, s.vx_next, s.vy_next);
+    sample.gauges = gauges.read(p, s.v_next[0], s.v_next[1]);
     samples.push_back(std::move(sample));
   };
   collapse.run(ThreadTuner(1, false), [](const Particles&, double) {}, [](double, std::size_t) {}, control);

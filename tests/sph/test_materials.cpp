@@ -191,7 +191,7 @@ namespace {
 template <class Model>
 std::optional<Mat3> stress_by(const Model& model, const State& before, const Particles& p, const Workspace& work,
                               const SolverSetup& setup, std::size_t i, double dt) {
-  const VelocityGradient L = kinematic_rates_of(p, work.neighbours, i, p.vx, p.vy, work.volume,
+  const VelocityGradient L = kinematic_rates_of(p, work.neighbours, i, {p.vx, p.vy}, work.volume,
                                                 setup.velocity_gradient_correction)
                                  .L;
   StepFailure ignored;

@@ -1,0 +1,61 @@
+#pragma once
+/// @file
+/// What a stage reads of one pair (i, j) whatever the dimension: j, W_ij, x_i − x_j and ∇_i W_ij as
+/// arrays of the dimension. The plane's pair rows store them (neighbours/neighbour_list.h); space's
+/// store W and dW/dr / r only, and x_i − x_j is taken from the positions here, ∇_i W_ij = dW/dr / r ·
+/// (x_i − x_j). Stages written once over PairVectors<dim> read as their equation in index notation.
+#include <array>
+#include <cstddef>
+
+#include "sph/neighbours/neighbour_list.h"
+#include "sph/particles.h"
+
+namespace soilsph::sph {
+
+template <int dim>
+struct PairVectors {
+  std::size_t j;
+  double w;                   ///< W_ij
+  std::array<double, dim> r;  ///< x_i − x_j (m)
+  std::array<double, dim> g;  ///< ∇_i W_ij (1/m^{dim+1})
+};
+
+/// Calls f(PairVectors) for every pair of particle i of the list `nl` over the particles p.
+template <int dim, class F>
+void for_each_pair_vectors(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t i, F&& f) {
+  if constexpr (dim == 2) {
+    nl.for_each_pair(i, [&](const typename PairList<2>::Pair& q) { f(PairVectors<2>{q.j, q.w, {q.rx, q.ry}, {q.gx, q.gy}}); });
+  } else {
+    const double xi = p.x[i], yi = p.y[i], zi = p.z[i];
+    nl.for_each_pair(i, [&](const typename PairList<3>::Pair& q) {
+      const std::array<double, 3> r{xi - p.x[q.j], yi - p.y[q.j], zi - p.z[q.j]};
+      f(PairVectors<3>{q.j, q.w, r, {q.dw_over_r * r[0], q.dw_over_r * r[1], q.dw_over_r * r[2]}});
+    });
+  }
+}
+
+/// a · b, summed from the first component on (the order the plane's formulas were written in).
+template <std::size_t n>
+inline double dot(const std::array<double, n>& a, const std::array<double, n>& b) {
+  double s = a[0] * b[0];
+  for (std::size_t k = 1; k < n; ++k) s += a[k] * b[k];
+  return s;
+}
+
+/// The stress arrays of the momentum equation, in symmetric_index order.
+template <int dim>
+std::array<std::vector<double>*, kSymmetricComponents<dim>> stress_arrays(ParticlesOf<dim>& p) {
+  if constexpr (dim == 2)
+    return {&p.sxx, &p.syy, &p.sxy};
+  else
+    return {&p.sxx, &p.syy, &p.szz, &p.sxy, &p.sxz, &p.syz};
+}
+template <int dim>
+std::array<const std::vector<double>*, kSymmetricComponents<dim>> stress_arrays(const ParticlesOf<dim>& p) {
+  if constexpr (dim == 2)
+    return {&p.sxx, &p.syy, &p.sxy};
+  else
+    return {&p.sxx, &p.syy, &p.szz, &p.sxy, &p.sxz, &p.syz};
+}
+
+}  // namespace soilsph::sph

@@ -1,0 +1,56 @@
+#pragma once
+/// @file
+/// The wall guard of space (the plane's is WallGuard, stages/boundaries.h): the last line of
+/// defence that puts a soil particle found behind a planar wall — within its ghost layers, and
+/// over the wall's outline grown by as much — back on the wall's plane, and removes its velocity
+/// into the wall. With the ghosts' stress and the viscosity it should never act; the solver counts
+/// how often it does. Walls of space do not move.
+#include <algorithm>
+#include <vector>
+
+#include "sph/geometry/planar_wall.h"
+#include "sph/particles.h"
+
+namespace soilsph::sph {
+
+struct PlaneGuard {
+  struct Face {
+    PlanarWall wall;
+    double depth;  ///< how far behind the plane (and beyond the outline) the guard reaches (m)
+    Vec2 outline_lo, outline_hi;  ///< the outline's bounds in the plane's (u, v)
+  };
+  std::vector<Face> faces;
+
+  /// Guards `wall` to `depth` behind it.
+  void add(const PlanarWall& wall, double depth) {
+    Vec2 lo = wall.outline.front(), hi = lo;
+    for (const Vec2& q : wall.outline)
+      lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)}, hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+    faces.push_back({wall, depth, lo, hi});
+  }
+
+  /// Returns the number of particles corrected (t: the plane's guard's signature; walls stay put).
+  std::size_t apply(ParticlesOf<3>& p, double /*t*/) const {
+    std::size_t corrected = 0;
+    for (const Face& f : faces) {
+      const Vec3 n = f.wall.inward;
+      const double c = dot(f.wall.origin, n), behind = -1e-12 * f.depth;
+      for (std::size_t i = 0; i < p.soil_count; ++i) {
+        const double d = p.x[i] * n.x + p.y[i] * n.y + p.z[i] * n.z - c;
+        if (!(d < behind)) continue;  // in front of the wall: nearly every particle, every step
+        if (d < -f.depth) continue;
+        const Vec2 q = f.wall.in_plane(p.position(i));
+        if (q.x < f.outline_lo.x - f.depth || q.x > f.outline_hi.x + f.depth || q.y < f.outline_lo.y - f.depth ||
+            q.y > f.outline_hi.y + f.depth)
+          continue;
+        p.x[i] -= d * n.x, p.y[i] -= d * n.y, p.z[i] -= d * n.z;
+        const double vn = p.vx[i] * n.x + p.vy[i] * n.y + p.vz[i] * n.z;
+        if (vn < 0.0) p.vx[i] -= vn * n.x, p.vy[i] -= vn * n.y, p.vz[i] -= vn * n.z;
+        ++corrected;
+      }
+    }
+    return corrected;
+  }
+};
+
+}  // namespace soilsph::sph
