@@ -13,13 +13,16 @@ namespace soilsph::sph {
 
 class FrameBuffers {
  public:
-  /// A view of the soil particles of `p` at time t. Only the derived fields in `fields` are
-  /// computed; the spans of the others are empty (a FrameWriter with the same fields skips them).
-  Frame view(const Particles& p, double t, FieldSet fields = FieldSet::all()) {
+  /// A view of the soil particles of `p` at time t, in 2D or 3D (Frame::dimension). Only the derived
+  /// fields in `fields` are computed; the spans of the others are empty (a FrameWriter with the same
+  /// fields skips them).
+  template <int dim>
+  Frame view(const ParticlesOf<dim>& p, double t, FieldSet fields = FieldSet::all()) {
     const std::size_t n = p.soil_count;
     const bool stress = fields.contains(Field::stress), mean = fields.contains(Field::p),
                mises = fields.contains(Field::q), plastic = fields.contains(Field::plastic_strain);
     for (auto* a : {&sxx_, &syy_, &szz_, &sxy_}) a->resize(stress ? n : 0);
+    for (auto* a : {&sxz_, &syz_}) a->resize(stress && dim == 3 ? n : 0);
     p_.resize(mean ? n : 0);
     q_.resize(mises ? n : 0);
     plastic_.resize(plastic ? n : 0);
@@ -30,18 +33,25 @@ class FrameBuffers {
         syy_[i] = s.stress(1, 1);
         szz_[i] = s.stress(2, 2);
         sxy_[i] = s.stress(0, 1);
+        if constexpr (dim == 3) sxz_[i] = s.stress(0, 2), syz_[i] = s.stress(1, 2);
       }
       if (mean) p_[i] = mean_pressure(s.stress);
       if (mises) q_[i] = deviatoric_stress(s.stress);
       if (plastic) plastic_[i] = s.plastic_shear_strain;
     }
     Frame f;
+    f.dimension = dim;
     f.time = t;
     f.x = {p.x.data(), n};
     f.y = {p.y.data(), n};
     f.vx = {p.vx.data(), n};
     f.vy = {p.vy.data(), n};
     f.sxx = sxx_, f.syy = syy_, f.szz = szz_, f.sxy = sxy_;
+    if constexpr (dim == 3) {
+      f.z = {p.z.data(), n};
+      f.vz = {p.vz.data(), n};
+      f.sxz = sxz_, f.syz = syz_;
+    }
     f.p = p_, f.q = q_;
     f.plastic_strain = plastic_;
     f.density = {p.density.data(), n};
@@ -51,7 +61,7 @@ class FrameBuffers {
   }
 
  private:
-  std::vector<double> sxx_, syy_, szz_, sxy_, p_, q_, plastic_;
+  std::vector<double> sxx_, syy_, szz_, sxy_, sxz_, syz_, p_, q_, plastic_;
 };
 
 }  // namespace soilsph::sph

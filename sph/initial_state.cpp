@@ -7,17 +7,12 @@
 #include "constitutive/admissible_state.h"
 #include "sph/geometry/lattice.h"
 #include "sph/geometry/surface.h"
+#include "sph/geostatic_state.h"
 #include <sstream>
 
 namespace soilsph::sph {
 
 namespace {
-
-/// The model's initial hardening state (its hook: MCC's p_c, 0 for models without one).
-template <class Model>
-double initial_preconsolidation(const Model& model, const Mat3& sigma, const InitialConditions& c) {
-  return model.initial_preconsolidation(sigma, c.overconsolidation_ratio, c.preconsolidation_floor);
-}
 
 /// σ_v = −ρ|g| (surface − height), the weight of the soil between the particle's height and the free
 /// surface above it along −g, and K0 σ_v across: σ = σ_v (K0 (I − ĝĝ) + ĝĝ) in the plane,
@@ -163,21 +158,18 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
         [&](const auto& model) {
           for (std::size_t i = 0; i < p.soil_count; ++i) {
             if (p.material[i] != static_cast<int>(k)) continue;
-            State& s = p.state[i];
-            s = State{};
             const Vec2 at{p.x[i], p.y[i]};
             const double height = g.height(at), surface = free_surface(scene, at);
             // One material: ρ (surface − height). Several: the mean density of the soil above.
             const double overburden = several && excess[i] != 0.0 ? rho + excess[i] / (surface - height) : rho;
-            s.stress = geostatic_stress(g, overburden, k0, surface, height);
-            s.pc = initial_preconsolidation(model, s.stress, scene.initial);
-            if (!admissible_state(model, s)) {
-              std::ostringstream msg;
-              msg << scene.source << ": the geostatic stress at (" << p.x[i] << ", " << p.y[i] << ") m"
-                  << " lies outside the yield surface of " << scene.material_table(k) << "; K0 = " << k0
-                  << " ([initial] lateral_stress_ratio) is not admissible for it";
-              throw ParameterError(msg.str());
+            const std::optional<State> state =
+                geostatic_state(model, geostatic_stress(g, overburden, k0, surface, height), scene.initial);
+            if (!state) {
+              std::ostringstream position;
+              position << "(" << p.x[i] << ", " << p.y[i] << ")";
+              throw ParameterError(inadmissible_geostatic_message(scene.source, position.str(), scene.material_table(k), k0));
             }
+            const State& s = p.state[i] = *state;
             p.sxx[i] = s.stress(0, 0), p.syy[i] = s.stress(1, 1), p.sxy[i] = s.stress(0, 1);
           }
         },
@@ -186,21 +178,9 @@ void set_geostatic_state(Particles& p, const Scene& scene) {
 }
 
 double smallest_admissible_lateral_stress_ratio(const Material& material, const Geometry& geometry) {
-  return std::visit(
-      [&](const auto& model) {
-        const auto admissible = [&](double k0) {
-          State s;
-          s.stress = geostatic_stress(geometry, model.params().density, k0, geometry.surface_level,
-                                      geometry.base_level);
-          s.pc = initial_preconsolidation(model, s.stress, {k0, 1.0, 0.0, {}, InitialStress::FlatSurface, {}});
-          return admissible_state(model, s);
-        };
-        double lo = 0.0, hi = 1.0;  // inadmissible at lo (or lo = 0), admissible at hi
-        if (admissible(1e-12)) return 0.0;
-        for (int k = 0; k < 60 && hi - lo > 1e-12; ++k) (admissible(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
-        return hi;
-      },
-      material);
+  return smallest_admissible_lateral_stress_ratio(material, [&](double density, double k0) {
+    return geostatic_stress(geometry, density, k0, geometry.surface_level, geometry.base_level);
+  });
 }
 
 double largest_initial_pressure(const Scene& scene) {

@@ -2,9 +2,10 @@
 /// @file
 /// A read-only view of the soil particles at one instant: what the solver hands to the writers.
 ///
-/// Conventions (see docs/reference/output-formats.md): SI units; 2D plane strain in x (horizontal)
-/// and y (vertical, up); stress components tension-positive as inside the solver (paper eq 9–10); p and q
-/// compression-positive soil-mechanics invariants (constitutive/tensor.h).
+/// Conventions (see docs/reference/output-formats.md): SI units; y vertical (up), x horizontal and,
+/// in 3D, z the other horizontal axis (2D is plane strain in x, y); stress components
+/// tension-positive as inside the solver (paper eq 9–10); p and q compression-positive
+/// soil-mechanics invariants (constitutive/tensor.h).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -14,8 +15,8 @@
 namespace soilsph::sph {
 
 /// The selectable output fields of a frame (`[output] fields` in a scene). Each name is the HDF5
-/// dataset (and XDMF attribute) it writes, except `stress`, which writes the four components
-/// sxx, syy, szz, sxy together. The positions are always written (they are the XDMF geometry).
+/// dataset (and XDMF attribute) it writes, except `stress`, which writes the components together:
+/// sxx, syy, szz, sxy in 2D, and sxz, syz too in 3D. The positions are always written (they are the XDMF geometry).
 enum class Field : std::uint8_t { velocity, speed, stress, p, q, plastic_strain, density, layer, material };
 
 /// The field names in the order of enum Field (and of the datasets in a frame).
@@ -63,6 +64,9 @@ struct Frame {
   std::span<const double> density;             ///< kg/m^3
   std::span<const int> layer;                  ///< horizontal layer id (0,1,2,... from the bottom)
   std::span<const int> material;               ///< index of the particle's material (summary.json "materials")
+  int dimension = 2;                           ///< 2: positions (x, y, 0); 3: (x, y, z) and the spans below
+  std::span<const double> z{}, vz{};           ///< 3D only: m, m/s
+  std::span<const double> sxz{}, syz{};        ///< 3D only: Pa, tension-positive
 };
 
 }  // namespace soilsph::sph

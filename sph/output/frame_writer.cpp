@@ -24,6 +24,11 @@ namespace {
 constexpr const char* kConventions =
     "SI units; x horizontal, y vertical (up), z = 0 (2D plane strain); stress components sxx, syy, "
     "szz, sxy tension-positive; p = -tr(sigma)/3 and q = sqrt(3/2 s:s) compression-positive";
+constexpr const char* kConventions3 =
+    "SI units; y vertical (up), x and z horizontal (3D); stress components sxx, syy, szz, sxy, sxz, "
+    "syz tension-positive; p = -tr(sigma)/3 and q = sqrt(3/2 s:s) compression-positive";
+
+const char* conventions(int dimension) { return dimension == 3 ? kConventions3 : kConventions; }
 
 using hdf5::check;
 using hdf5::Handle;
@@ -41,12 +46,13 @@ std::string frame_name(std::size_t index) {
   return name;
 }
 
-/// Interleaves two components with z = 0 into an N×3 array (XDMF XYZ geometry and vectors).
-std::vector<double> xyz(std::span<const double> a, std::span<const double> b) {
+/// Interleaves two components with z = 0, or three, into an N×3 array (XDMF XYZ geometry and vectors).
+std::vector<double> xyz(std::span<const double> a, std::span<const double> b, std::span<const double> c = {}) {
   std::vector<double> out(3 * a.size(), 0.0);
   for (std::size_t i = 0; i < a.size(); ++i) {
     out[3 * i] = a[i];
     out[3 * i + 1] = b[i];
+    if (!c.empty()) out[3 * i + 2] = c[i];
   }
   return out;
 }
@@ -67,13 +73,16 @@ struct XdmfField {
   const char* number_type;     ///< "Float" or "Int"
   int precision;               ///< bytes
   int components;
+  bool space_only = false;  ///< written in 3D frames only
 };
-constexpr std::array<XdmfField, 12> kFields{
+constexpr std::array<XdmfField, 14> kFields{
     {{Field::velocity, "velocity", "Vector", "Float", 8, 3},
      {Field::stress, "sxx", "Scalar", "Float", 8, 1},
      {Field::stress, "syy", "Scalar", "Float", 8, 1},
      {Field::stress, "szz", "Scalar", "Float", 8, 1},
      {Field::stress, "sxy", "Scalar", "Float", 8, 1},
+     {Field::stress, "sxz", "Scalar", "Float", 8, 1, true},
+     {Field::stress, "syz", "Scalar", "Float", 8, 1, true},
      {Field::p, "p", "Scalar", "Float", 8, 1},
      {Field::q, "q", "Scalar", "Float", 8, 1},
      {Field::plastic_strain, "plastic_strain", "Scalar", "Float", 8, 1},
@@ -81,6 +90,9 @@ constexpr std::array<XdmfField, 12> kFields{
      {Field::layer, "layer", "Scalar", "Int", 4, 1},
      {Field::material, "material", "Scalar", "Int", 4, 1},
      {Field::speed, "speed", "Scalar", "Float", 8, 1}}};
+
+/// Whether the writer of frames of `dimension` writes `field`'s dataset when its Field is selected.
+bool written_in(const XdmfField& field, int dimension) { return dimension == 3 || !field.space_only; }
 
 /// Root dataset of the vertex indices 0..n−1 that make each of n particles a Polyvertex cell: without
 /// explicit connectivity the Xdmf3 library (ParaView's Xdmf3 readers) reads a grid of points but no
@@ -124,8 +136,9 @@ void write_file_atomically(const std::filesystem::path& path, Fill&& fill) {
 constexpr const char* kFrameFolder = "frames";
 }  // namespace
 
-FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields)
-    : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf"), fields_(fields) {
+FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields, int dimension)
+    : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf"), fields_(fields), dimension_(dimension) {
+  if (dimension != 2 && dimension != 3) throw std::invalid_argument("FrameWriter: dimension must be 2 or 3");
   std::filesystem::create_directories(dir);
   std::filesystem::remove_all(dir / kFrameFolder);  // an earlier run's frames
   std::filesystem::create_directories(dir / kFrameFolder);
@@ -133,11 +146,14 @@ FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields)
   write_xdmf();
 }
 
-FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields, Continuing)
-    : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf"), fields_(fields) {}
+FrameWriter::FrameWriter(const std::filesystem::path& dir, FieldSet fields, int dimension, Continuing)
+    : h5_path_(dir / "frames.h5"), xdmf_path_(dir / "frames.xdmf"), fields_(fields), dimension_(dimension) {
+  if (dimension != 2 && dimension != 3) throw std::invalid_argument("FrameWriter: dimension must be 2 or 3");
+}
 
-FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet fields, double last_kept) {
-  FrameWriter writer(dir, fields, Continuing{});
+FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet fields, double last_kept,
+                                    int dimension) {
+  FrameWriter writer(dir, fields, dimension, Continuing{});
   std::error_code ignored;
   for (const auto& entry : std::filesystem::directory_iterator(dir / kFrameFolder, ignored))
     if (entry.path().extension() == ".tmp") std::filesystem::remove(entry.path(), ignored);  // a killed write
@@ -177,7 +193,7 @@ std::filesystem::path FrameWriter::frame_path(std::size_t index) const {
 void FrameWriter::write_index() const {
   ensure_room(h5_path_, kFileOverhead + kLinkBytes * frames_.size());
   write_file_atomically(h5_path_, [&](hid_t file) {
-    write_string_attribute(file, "conventions", kConventions);
+    write_string_attribute(file, "conventions", conventions(dimension_));
     std::vector<std::size_t> counts;
     for (std::size_t index = 0; index < frames_.size(); ++index) {
       const std::string name = frame_name(index), target = std::string(kFrameFolder) + "/" + name + ".h5";
@@ -202,14 +218,22 @@ void FrameWriter::write(const Frame& frame) {
                                   std::to_string(n) + " particles)");
     }
   };
+  if (frame.dimension != dimension_)
+    throw std::invalid_argument("FrameWriter: the frame at t = " + exact(frame.time) + " is " +
+                                std::to_string(frame.dimension) + "D, the writer's frames " +
+                                std::to_string(dimension_) + "D");
+  const bool space = dimension_ == 3;
   const auto has = [&](Field f) { return fields_.contains(f); };
   check_size(frame.y.size());
+  if (space) check_size(frame.z.size());
   if (has(Field::velocity) || has(Field::speed)) {
     check_size(frame.vx.size());
     check_size(frame.vy.size());
+    if (space) check_size(frame.vz.size());
   }
   if (has(Field::stress)) {
     for (const auto& s : {frame.sxx, frame.syy, frame.szz, frame.sxy}) check_size(s.size());
+    if (space) check_size(frame.sxz.size()), check_size(frame.syz.size());
   }
   if (has(Field::p)) check_size(frame.p.size());
   if (has(Field::q)) check_size(frame.q.size());
@@ -221,19 +245,22 @@ void FrameWriter::write(const Frame& frame) {
   const std::string where = path.string() + ":/";
   // Room first, so that a full disk is one clear message rather than HDF5's failure half-way.
   std::uintmax_t values = 3 * n;
-  for (const XdmfField& f : kFields) values += fields_.contains(f.field) ? f.components * n : 0;
+  for (const XdmfField& f : kFields) values += fields_.contains(f.field) && written_in(f, dimension_) ? f.components * n : 0;
   ensure_room(path, 8 * values + kFileOverhead);
   write_file_atomically(path, [&](hid_t file) {
     write_double_attribute(file, "time", frame.time);
-    const std::vector<double> position = xyz(frame.x, frame.y);
+    const std::vector<double> position = xyz(frame.x, frame.y, frame.z);
     write_dataset(file, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, position.data(), where);
     if (has(Field::velocity)) {
-      const std::vector<double> velocity = xyz(frame.vx, frame.vy);
+      const std::vector<double> velocity = xyz(frame.vx, frame.vy, frame.vz);
       write_dataset(file, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, velocity.data(), where);
     }
     if (has(Field::speed)) {
       std::vector<double> speed(n);
-      for (std::size_t i = 0; i < n; ++i) speed[i] = std::hypot(frame.vx[i], frame.vy[i]);
+      if (space)
+        for (std::size_t i = 0; i < n; ++i) speed[i] = std::hypot(frame.vx[i], frame.vy[i], frame.vz[i]);
+      else
+        for (std::size_t i = 0; i < n; ++i) speed[i] = std::hypot(frame.vx[i], frame.vy[i]);
       hdf5::write_doubles(file, "speed", speed, where);
     }
     if (has(Field::stress)) {
@@ -241,6 +268,10 @@ void FrameWriter::write(const Frame& frame) {
       hdf5::write_doubles(file, "syy", frame.syy, where);
       hdf5::write_doubles(file, "szz", frame.szz, where);
       hdf5::write_doubles(file, "sxy", frame.sxy, where);
+      if (space) {
+        hdf5::write_doubles(file, "sxz", frame.sxz, where);
+        hdf5::write_doubles(file, "syz", frame.syz, where);
+      }
     }
     if (has(Field::p)) hdf5::write_doubles(file, "p", frame.p, where);
     if (has(Field::q)) hdf5::write_doubles(file, "q", frame.q, where);
@@ -269,7 +300,7 @@ void FrameWriter::write_xdmf() const {
   const std::string h5_name = h5_path_.filename().string();
   std::ostringstream out;
   out << "<?xml version=\"1.0\" ?>\n"
-      << "<!-- soilsph SPH frames (data in " << h5_name << "). " << kConventions << " -->\n"
+      << "<!-- soilsph SPH frames (data in " << h5_name << "). " << conventions(dimension_) << " -->\n"
       << "<Xdmf Version=\"2.0\">\n  <Domain>\n"
       << "    <Grid Name=\"soil\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (std::size_t index = 0; index < frames_.size(); ++index) {
@@ -293,7 +324,7 @@ void FrameWriter::write_xdmf() const {
     data_item("position", "Float", 8, 3);
     out << "        </Geometry>\n";
     for (const XdmfField& field : kFields) {
-      if (!fields_.contains(field.field)) continue;
+      if (!fields_.contains(field.field) || !written_in(field, dimension_)) continue;
       out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << field.attribute_type
           << "\" Center=\"Node\">\n";
       data_item(field.name, field.number_type, field.precision, field.components);

@@ -26,24 +26,30 @@ class FrameWriter {
   /// Creates DIR if needed, removes DIR/frames/ of an earlier run, and writes empty indexes. Every
   /// frame holds the
   /// positions and the datasets of `fields` (default: all), and the XDMF index lists only those.
-  explicit FrameWriter(const std::filesystem::path& dir, FieldSet fields = FieldSet::all());
+  /// `dimension` 2 or 3: the frames' (Frame::dimension), which the conventions of the indexes state.
+  explicit FrameWriter(const std::filesystem::path& dir, FieldSet fields = FieldSet::all(), int dimension = 2);
   /// Continues the frames of DIR (a resumed run): keeps those up to time `last_kept` and deletes the
   /// later ones, which a run wrote after the checkpoint it is resumed from. Throws std::runtime_error
   /// if DIR/frames.h5 cannot be opened.
-  static FrameWriter continuing(const std::filesystem::path& dir, FieldSet fields, double last_kept);
+  static FrameWriter continuing(const std::filesystem::path& dir, FieldSet fields, double last_kept,
+                                int dimension = 2);
   FrameWriter(FrameWriter&&) = default;
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
 
   /// Appends a frame and rewrites the XDMF index; throws std::invalid_argument if the spans of the
   /// positions and of the selected fields differ in length (the spans of the other fields are not
-  /// read) and std::runtime_error if HDF5 or the file system fails.
+  /// read) or the frame's dimension is not the writer's, and std::runtime_error if HDF5 or the file
+  /// system fails. A 3D frame writes positions and velocities (x, y, z) and the stress components
+  /// sxx, syy, szz, sxy, sxz, syz; a 2D frame (x, y, 0) and sxx, syy, szz, sxy.
   void write(const Frame& frame);
 
   /// Number of frames written so far.
   std::size_t frames() const { return frames_.size(); }
   /// The fields written besides the positions.
   FieldSet fields() const { return fields_; }
+  /// 2 or 3.
+  int dimension() const { return dimension_; }
   /// DIR/frames.h5.
   const std::filesystem::path& h5_path() const { return h5_path_; }
   /// DIR/frames.xdmf.
@@ -58,10 +64,11 @@ class FrameWriter {
   void write_index() const;
   std::filesystem::path frame_path(std::size_t index) const;
   struct Continuing {};
-  FrameWriter(const std::filesystem::path& dir, FieldSet fields, Continuing);
+  FrameWriter(const std::filesystem::path& dir, FieldSet fields, int dimension, Continuing);
 
   std::filesystem::path h5_path_, xdmf_path_;
   FieldSet fields_;
+  int dimension_;
   std::vector<FrameEntry> frames_;
 };
 

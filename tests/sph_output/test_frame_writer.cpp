@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sph_output_fixtures.h"
+#include "sph/frame_buffers.h"
 #include "../common/temp_dir.h"
 
 using namespace soilsph::sph;
@@ -412,4 +413,69 @@ TEST_CASE("hold the frames open until told (run by the test above)", "[.][hold_f
   REQUIRE(write(std::atoi(ready), "x", 1) == 1);
   char byte = 0;
   REQUIRE(read(std::atoi(done), &byte, 1) == 1);
+}
+
+TEST_CASE("a 3D frame writes positions and velocities (x, y, z) and the six stress components", "[frame_writer]") {
+  // Four soil particles and one ghost (not written) with distinct values in every component.
+  ParticlesOf<3> p;
+  p.resize(4, 1);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double k = static_cast<double>(i + 1);
+    p.x[i] = 0.1 * k, p.y[i] = 0.2 * k, p.z[i] = 0.3 * k;
+    p.vx[i] = -1.0 * k, p.vy[i] = 2.0 * k, p.vz[i] = -3.0 * k;
+    p.density[i] = 2600.0 + k;
+    p.layer[i] = static_cast<int>(i);
+    soilsph::Mat3 s;
+    s << -10 * k, 4 * k, 5 * k, 4 * k, -20 * k, 6 * k, 5 * k, 6 * k, -30 * k;
+    p.state[i].stress = s;
+  }
+  const auto dir = fresh_directory("space");
+  FrameBuffers buffers;
+  const Frame frame = buffers.view(p, 0.25);
+  CHECK(frame.dimension == 3);
+  {
+    FrameWriter writer(dir, FieldSet::all(), 3);
+    writer.write(frame);
+    SyntheticParticles plane(4, 0.5);
+    CHECK_THROWS_AS(writer.write(plane.frame()), std::invalid_argument);  // a 2D frame to a 3D writer
+  }
+  const H5File file(dir / "frames.h5");
+  std::vector<hsize_t> dims;
+  const auto position = read_dataset<double>(file.id, "/frame_000000/position", H5T_NATIVE_DOUBLE, dims);
+  CHECK(dims == std::vector<hsize_t>{4, 3});
+  const auto velocity = read_dataset<double>(file.id, "/frame_000000/velocity", H5T_NATIVE_DOUBLE, dims);
+  const auto speed = read_dataset<double>(file.id, "/frame_000000/speed", H5T_NATIVE_DOUBLE, dims);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double k = static_cast<double>(i + 1);
+    CHECK(position[3 * i] == p.x[i]);
+    CHECK(position[3 * i + 1] == p.y[i]);
+    CHECK(position[3 * i + 2] == p.z[i]);
+    CHECK(velocity[3 * i] == p.vx[i]);
+    CHECK(velocity[3 * i + 1] == p.vy[i]);
+    CHECK(velocity[3 * i + 2] == p.vz[i]);
+    CHECK(speed[i] == Approx(k * std::sqrt(14.0)).epsilon(1e-15));  // |(−1, 2, −3)| k
+  }
+  const std::pair<const char*, double> components[] = {{"sxx", -10}, {"syy", -20}, {"szz", -30},
+                                                       {"sxy", 4},   {"sxz", 5},   {"syz", 6}};
+  for (const auto& [name, per_k] : components) {
+    const auto values = read_dataset<double>(file.id, std::string("/frame_000000/") + name, H5T_NATIVE_DOUBLE, dims);
+    CHECK(dims == std::vector<hsize_t>{4});
+    for (std::size_t i = 0; i < 4; ++i) CHECK(values[i] == per_k * static_cast<double>(i + 1));
+  }
+  const std::string xdmf = read_text(dir / "frames.xdmf");
+  CHECK(xdmf.find("TopologyType=\"Polyvertex\"") != std::string::npos);
+  CHECK(xdmf.find("GeometryType=\"XYZ\"") != std::string::npos);
+  for (const char* name : {"sxz", "syz"}) CHECK(xdmf.find(std::string("Attribute Name=\"") + name + "\"") != std::string::npos);
+  CHECK(xdmf.find("x and z horizontal (3D)") != std::string::npos);
+}
+
+TEST_CASE("a 2D frame writer lists no sxz or syz", "[frame_writer]") {
+  const auto dir = fresh_directory("plane-no-shear-z");
+  FrameWriter writer(dir);
+  writer.write(SyntheticParticles(3, 0.0).frame());
+  const std::string xdmf = read_text(dir / "frames.xdmf");
+  CHECK(xdmf.find("sxz") == std::string::npos);
+  CHECK(xdmf.find("syz") == std::string::npos);
+  const H5File file(dir / "frames.h5");
+  CHECK(group_members(file.id, "/frame_000000").count("sxz") == 0);
 }

@@ -1,0 +1,118 @@
+#include "sph/initial_state_3d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "sph/geometry/planar_ghosts.h"
+#include "sph/geostatic_state.h"
+#include "sph/stages/boundaries.h"
+
+namespace soilsph::sph {
+
+namespace {
+/// The scene's soil nodes: its solid's lattice nodes.
+std::vector<Vec3> soil_nodes_3d(const Geometry3& g) {
+  return std::visit([&](const auto& shape) { return lattice_nodes_inside(shape, g.lattice); }, g.soil);
+}
+
+/// μ of a wall: the 2D wall's one formula (stages/boundaries.h), from the same kind and angle.
+double friction_coefficient(const Wall3& wall) {
+  Wall plane_wall;
+  plane_wall.kind = wall.kind;
+  plane_wall.friction_angle = wall.friction_angle;
+  return wall_friction_coefficient(plane_wall);
+}
+}  // namespace
+
+ParticlesOf<3> build_particles_3d(const Scene3& scene) {
+  const Geometry3& g = scene.geometry;
+  if (scene.materials.size() != 1)
+    throw ParameterError(scene.source + ": a 3D scene holds one soil (one [material]); it has " +
+                         std::to_string(scene.materials.size()));
+  const double dx = g.particle_spacing, rho = density(scene.material), mass = rho * dx * dx * dx;
+  const std::vector<Vec3> soil = soil_nodes_3d(g);
+  if (soil.empty()) throw ParameterError(scene.source + ": the soil holds no lattice node");
+  std::vector<PlanarWall> planes;
+  for (const Wall3& w : g.walls) planes.push_back(w.plane);
+  const std::vector<GhostPoint3> ghosts = planar_ghost_points(planes, g.lattice, g.boundary_layers);
+
+  double lowest = std::numeric_limits<double>::infinity();  // the bottom of the lowest particle's cell
+  for (const Vec3& n : soil) lowest = std::min(lowest, g.height(n) - 0.5 * dx);
+  ParticlesOf<3> p;
+  p.resize(soil.size(), ghosts.size());
+  for (std::size_t i = 0; i < soil.size(); ++i) {
+    p.x[i] = p.x0[i] = soil[i].x;
+    p.y[i] = p.y0[i] = soil[i].y;
+    p.z[i] = p.z0[i] = soil[i].z;
+    p.layer[i] = static_cast<int>((g.height(soil[i]) - lowest) / scene.output.layer_thickness);
+    p.material[i] = 0;
+  }
+  for (std::size_t k = 0; k < ghosts.size(); ++k) {
+    const GhostPoint3& b = ghosts[k];
+    const Wall3& wall = g.walls[static_cast<std::size_t>(b.wall)];
+    const std::size_t i = soil.size() + k;
+    p.x[i] = b.position.x, p.y[i] = b.position.y, p.z[i] = b.position.z;
+    p.boundary_kind[k] = wall.kind;
+    p.wall_nx[k] = b.inward.x, p.wall_ny[k] = b.inward.y, p.wall_nz[k] = b.inward.z;
+    p.wall_friction[k] = friction_coefficient(wall);
+    p.wall_stick[k] = wall.kind == WallKind::NoSlip ? 1.0 : 0.0;
+    p.wall_id[k] = b.wall;
+  }
+  std::fill(p.density.begin(), p.density.end(), rho);
+  std::fill(p.mass.begin(), p.mass.end(), mass);
+  return p;
+}
+
+Mat3 geostatic_stress_3d(const Geometry3& g, double density, double k0, double surface, double height) {
+  // σ_v (K0 (I − ĝĝ) + ĝĝ); "+ 0.0" turns a −0 of the products into +0 (no −0 shear in output).
+  const double vertical = -density * g.gravity_magnitude() * (surface - height);
+  const Vec3 d = g.down();
+  const double c[3] = {d.x, d.y, d.z};
+  Mat3 sigma;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      const double identity = a == b ? 1.0 : 0.0;
+      sigma(a, b) = vertical * (k0 * (identity - c[a] * c[b]) + c[a] * c[b]) + 0.0;
+    }
+  return sigma;
+}
+
+void set_geostatic_state_3d(ParticlesOf<3>& p, const Scene3& scene) {
+  const Geometry3& g = scene.geometry;
+  const double rho = density(scene.material), k0 = scene.initial.lateral_stress_ratio;
+  std::visit(
+      [&](const auto& model) {
+        for (std::size_t i = 0; i < p.soil_count; ++i) {
+          const Vec3 at{p.x[i], p.y[i], p.z[i]};
+          const double height = g.height(at), surface = g.surface_level;
+          const std::optional<State> state =
+              geostatic_state(model, geostatic_stress_3d(g, rho, k0, surface, height), scene.initial);
+          if (!state) {
+            std::ostringstream position;
+            position << "(" << at.x << ", " << at.y << ", " << at.z << ")";
+            throw ParameterError(
+                inadmissible_geostatic_message(scene.source, position.str(), scene.material_table(0), k0));
+          }
+          const Mat3& s = (p.state[i] = *state).stress;
+          p.sxx[i] = s(0, 0), p.syy[i] = s(1, 1), p.szz[i] = s(2, 2);
+          p.sxy[i] = s(0, 1), p.sxz[i] = s(0, 2), p.syz[i] = s(1, 2);
+        }
+      },
+      scene.material);
+}
+
+double smallest_admissible_lateral_stress_ratio_3d(const Material& material, const Geometry3& geometry) {
+  return smallest_admissible_lateral_stress_ratio(material, [&](double density, double k0) {
+    return geostatic_stress_3d(geometry, density, k0, geometry.surface_level, geometry.base_level);
+  });
+}
+
+double largest_initial_pressure(const Scene3& scene) {
+  const Geometry3& g = scene.geometry;
+  return mean_pressure(geostatic_stress_3d(g, density(scene.material), scene.initial.lateral_stress_ratio,
+                                           g.surface_level, g.base_level));
+}
+
+}  // namespace soilsph::sph

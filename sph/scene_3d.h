@@ -1,0 +1,131 @@
+#pragma once
+/// @file
+/// A 3D scene (`[scene] dimension = 3`): what every scene has (SceneSettings: materials,
+/// [initial], [numerics], [output], rest, limits, `resolved`) and the geometry of space, built from
+/// one of two shorthands (docs/reference/scenes.md, "Three dimensions"):
+/// - the axisymmetric column, column_radius and column_height: a cylinder of soil standing free on
+///   a no-slip floor, axis along y through x = z = 0, run as a quarter (default), a half or whole;
+/// - the slab, column_width, column_height and slab_thickness: the 2D column extruded along z
+///   between two free-slip planes, with the 2D column's fixed wall, floor and withdrawal.
+/// y is up, as in 2D: gravity defaults to (0, −9.81, 0).
+#include <span>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "sph/analysis/axisymmetric_deposit.h"
+#include "sph/geometry/extrusion.h"
+#include "sph/geometry/planar_wall.h"
+#include "sph/geometry/solid.h"
+#include "sph/geometry/vec3.h"
+#include "sph/scene.h"
+#include "sph/scene_settings.h"
+
+namespace soilsph::sph {
+
+/// Which part of an axisymmetric column is run; the rest is mirrored by free-slip symmetry planes.
+enum class ColumnSymmetry {
+  Quarter,  ///< "quarter": x ≥ 0, z ≥ 0, symmetry planes x = 0 and z = 0 (azimuth span 90°)
+  Half,     ///< "half": z ≥ 0, symmetry plane z = 0 (180°)
+  None,     ///< "none": the whole cylinder (360°)
+};
+
+/// A cylinder of soil on the floor: axis along y through x = z = 0, radius r0, 0 ≤ y ≤ H0, cut to
+/// the part its symmetry keeps. A SolidShape (geometry/solid.h): its nodes are the soil.
+struct ColumnCylinder {
+  double radius;  ///< r0 (m)
+  double height;  ///< H0 (m)
+  ColumnSymmetry symmetry;
+
+  /// x² + z² ≤ r0² (relative round-off 10⁻⁹), 0 ≤ y ≤ H0 (10⁻⁹ H0), and x ≥ 0 (quarter), z ≥ 0
+  /// (quarter and half).
+  bool contains(Vec3 p) const;
+  Box3 bounds() const;
+};
+
+/// The soil of a 3D scene: the cylinder or the extruded column.
+using SoilShape3 = std::variant<ColumnCylinder, Extrusion>;
+
+/// A wall of space: its plane polygon, how it acts on the soil (as the 2D Wall) and its name in the
+/// run's histories.
+struct Wall3 {
+  PlanarWall plane;
+  WallKind kind = WallKind::FreeSlip;
+  double friction_angle = 0.0;  ///< degrees, Frictional only
+  std::string label;  ///< "floor", "symmetry_x", "symmetry_z", "symmetry_far", "fixed_wall", "removable_wall"
+};
+
+/// [scene] of a 3D scene: the shorthand's keys and what they build.
+struct Geometry3 {
+  enum class Shape { AxisymmetricColumn, Slab };
+  Shape shape;
+
+  // The keys (each as used; those of the other shorthand 0).
+  double column_radius;            ///< axisymmetric: r0 (m)
+  double column_width;             ///< slab: W (m), soil on 0 ≤ x ≤ W
+  double column_height;            ///< H0 (m), soil on 0 ≤ y ≤ H0
+  double slab_thickness;           ///< slab: T (m), soil on 0 < z < T
+  ColumnSymmetry symmetry;         ///< axisymmetric; the slab: None
+  double floor_radius;             ///< axisymmetric: half-width of the square floor (m)
+  double floor_length;             ///< slab: the floor from the fixed wall towards −x (m)
+  WallWithdrawal wall_withdrawal;  ///< slab: "instant" or "none"; axisymmetric: None (no wall)
+  double particle_spacing;         ///< Δp (m)
+  double smoothing_ratio;          ///< h/Δp
+  double end_time;                 ///< s
+  Vec3 gravity;                    ///< m/s²; the scalar key g means (0, −g, 0)
+  int boundary_layers;             ///< layers of ghost particles behind each wall
+
+  // What they build.
+  SoilShape3 soil;   ///< the soil's solid
+  Lattice3 lattice;  ///< soil and ghost nodes (axisymmetric: origin (Δp/2, 0, Δp/2); slab: (0, 0, Δp/2))
+  std::vector<Wall3> walls;  ///< every wall present at t = 0 (a withdrawn wall is never built)
+  Box3 domain;               ///< no soil particle may leave it: the floor's extent, ghosts and kernel support
+                             ///< around it, up to twice the soil's height above the floor
+  double floor_level;        ///< the floor surface's height y (m), −Δp/2: the potential-energy datum
+  double surface_level;      ///< the geostatic free surface: H0 + Δp/2 (m)
+  double base_level;         ///< the lowest soil particle: 0 (m)
+  DepositAxis deposit_axis;  ///< the column's axis on the floor (the slab: the fixed wall's foot, up y)
+  double azimuth_span_deg;   ///< 90, 180 or 360 (the slab: 0, no azimuths)
+
+  double smoothing_length() const { return smoothing_ratio * particle_spacing; }
+  double gravity_magnitude() const { return norm(gravity); }
+  /// Unit vector along gravity; (0, −1, 0) without gravity.
+  Vec3 down() const {
+    const double g = gravity_magnitude();
+    return g > 0.0 ? (1.0 / g) * gravity : Vec3{0.0, -1.0, 0.0};
+  }
+  /// Height of a point along −g (m): y when gravity is along −y.
+  double height(Vec3 p) const { return -dot(down(), p); }
+};
+
+/// A 3D scene.
+struct Scene3 : SceneSettings {
+  Geometry3 geometry;
+};
+
+/// The default floor half-width of an axisymmetric column: twice the runout of Lube et al. (2004)
+/// at its aspect ratio beyond the column, plus four spacings: r0 (1 + 2 (r∞ − r0)/r0) + 4 Δp.
+double default_floor_radius(double column_radius, double column_height, double spacing);
+
+/// Reads and validates a 3D scene from a parsed TOML document; `source` names it in errors. Throws
+/// ParameterError for a 2D scene (no `dimension` or dimension = 2).
+Scene3 read_scene_3d(const toml::table& root, const std::string& source);
+/// Parses `path`, applies the `section.key=value` overrides in order, then reads the 3D scene.
+Scene3 load_scene_3d(const std::string& path, std::span<const std::string> overrides = {});
+/// The same from TOML text (a checkpoint's scene).
+Scene3 parse_scene_3d(const std::string& text, const std::string& source,
+                      std::span<const std::string> overrides = {});
+
+/// A scene of either dimension, read after the overrides (which may set scene.dimension): a Scene
+/// (2D) for dimension 2 or none, a Scene3 for 3.
+using AnyScene = std::variant<Scene, Scene3>;
+AnyScene load_any_scene(const std::string& path, std::span<const std::string> overrides = {});
+AnyScene parse_any_scene(const std::string& text, const std::string& source,
+                         std::span<const std::string> overrides = {});
+
+/// The scene as run (Scene3::resolved) as TOML text, which reads back to the same scene.
+std::string scene_toml(const Scene3& scene);
+/// The same as a JSON object (summary.json's "inputs").
+std::string scene_json(const Scene3& scene);
+
+}  // namespace soilsph::sph
