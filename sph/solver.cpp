@@ -1,6 +1,7 @@
 #include "sph/solver.h"
 
 #include "sph/initial_state.h"
+#include "sph/setup_parts.h"
 
 #include <algorithm>
 #include <limits>
@@ -72,46 +73,22 @@ template MaterialGroups material_groups(const std::vector<Material>&, const Part
 SolverSetup make_solver_setup(const Scene& scene) {
   const Geometry& g = scene.geometry;
   const CubicSpline kernel(g.smoothing_length());
-  // The stiffest elastic state of the column: moduli at the largest initial pressure (constant
-  // elasticity ignores it; pressure-dependent MCC is stiffest at the base). Several materials: the
-  // largest of their speeds, and apart that of those whose stiffness does not follow the pressure.
-  const double p0 = largest_initial_pressure(scene);
-  double c = 0.0, constant_c = 0.0;
-  bool pressure_dependent = false;
-  for (const Material& material : scene.materials) {
-    const double ck = p_wave_speed(material, p0);
-    c = std::max(c, ck);
-    if (std::visit([](const auto& m) { return m.elasticity().kind(); }, material) ==
-        Elasticity::Kind::PressureDependent)
-      pressure_dependent = true;
-    else
-      constant_c = std::max(constant_c, ck);
-  }
-
-  MomentumParams momentum;
-  momentum.viscosity_alpha = scene.numerics.viscosity_alpha;
-  momentum.viscosity_beta = scene.numerics.viscosity_beta;
-  momentum.sound_speed = c;
-  momentum.smoothing_length = kernel.smoothing_length();
-  momentum.gravity = g.gravity;
-  if (scene.numerics.artificial_stress)
-    momentum.artificial_stress = {scene.numerics.artificial_stress_epsilon,
-                                  scene.numerics.artificial_stress_exponent, kernel, g.particle_spacing};
+  const InitialSoundSpeeds c = initial_sound_speeds(scene.materials, largest_initial_pressure(scene));
   return {.kernel = kernel,
           .cfl = scene.numerics.cfl,
-          .sound_speed = c,
+          .sound_speed = c.largest,
           .end_time = g.end_time,
           .frame_interval = scene.output.frame_interval,
-          .momentum = momentum,
+          .momentum = momentum_params(scene.numerics, kernel, g.gravity, g.particle_spacing, c.largest),
           .guard = wall_guard(scene),
           .walls = wall_motions(scene),
           .potential_datum = potential_datum(scene),
           .velocity_gradient_correction = scene.numerics.velocity_gradient_correction,
-          .pressure_dependent_stiffness = pressure_dependent,
+          .pressure_dependent_stiffness = c.pressure_dependent,
           .rest = scene.rest,
           .domain = domain(scene),
           .checkpoint_interval = scene.output.checkpoint_interval,
-          .constant_stiffness_sound_speed = constant_c,
+          .constant_stiffness_sound_speed = c.constant_stiffness,
           .ghost_body_force = scene.numerics.ghost_body_force ? g.gravity : Vec2{}};
 }
 

@@ -38,6 +38,7 @@
 #include "sph/range_balancer.h"
 #include "sph/rest.h"
 #include "sph/scene.h"
+#include "sph/scene_3d.h"
 #include "sph/stages/artificial_stress.h"
 #include "sph/stages/boundaries.h"
 #include "sph/stages/continuity.h"
@@ -97,6 +98,8 @@ using SolverSetup = SolverSetupOf<2>;
 
 /// Derives the kernel, the time step and the stage parameters from the scene (sph/solver.cpp).
 SolverSetup make_solver_setup(const Scene& scene);
+/// The same for a scene of space (sph/solver_3d.cpp, library soilsph_sph_3d).
+SolverSetupOf<3> make_solver_setup(const Scene3& scene);
 
 /// The state inside a step at t^n, after the acceleration and before anything changes σ, v or the
 /// pairs: what the histories sample (output/history_writer.h; analysis/boundary_forces.h, gauges.h).

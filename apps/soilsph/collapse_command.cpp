@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "apps/soilsph/collapse_preparation.h"
+#include "apps/soilsph/collapse_run.h"
 #include "apps/soilsph/commands.h"
 #include "apps/soilsph/stop_signal.h"
 #include "constitutive/integrators/integrator.h"
@@ -27,8 +28,6 @@
 #include "sph/output/summary.h"
 
 namespace soilsph::cli {
-
-namespace {
 namespace fs = std::filesystem;
 
 /// `--threads auto`: every core (or OMP_NUM_THREADS if less), one thread while the machine is too
@@ -47,13 +46,31 @@ sph::ThreadTuner thread_tuner(const std::string& option) {
   return sph::ThreadTuner(std::min(requested, cores), false);
 }
 
-struct CollapseOptions {
-  std::string scene;
-  std::string out;               ///< empty: results/<the scene file's stem>
-  std::string resume;            ///< a run folder to continue, or empty
-  std::string threads = "auto";  ///< "auto" or a count
-  std::vector<std::string> overrides;
-};
+/// Files a previous run left in DIR that would describe it beside this run's frames: its summary,
+/// its checkpoint, its histories and the pictures scripts/plot_collapse.py draws.
+void remove_stale_results(const fs::path& dir) {
+  std::error_code ignored;
+  for (const char* name : {"summary.json", "summary.json.tmp", "checkpoint.h5", "checkpoint.h5.tmp",
+                           "frames.xdmf.tmp", "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png",
+                           sph::HistoryWriter::kBoundaryFile, sph::HistoryWriter::kGaugeFile, "boundary_forces.png",
+                           "gauges.png"})
+    fs::remove(dir / name, ignored);
+  if (fs::is_directory(dir, ignored))
+    for (const auto& entry : fs::directory_iterator(dir, ignored)) {
+      const std::string name = entry.path().filename().string();
+      if (name.starts_with("velocity_t") && name.ends_with(".png")) fs::remove(entry.path(), ignored);
+    }
+}
+
+/// The run's folder: the one --resume continues, --out, or results/<the scene file's stem>, so that
+/// runs of different scenes never replace each other.
+fs::path run_folder(const CollapseOptions& o) {
+  if (!o.resume.empty()) return o.resume;
+  if (!o.out.empty()) return o.out;
+  return fs::path("results") / fs::path(o.scene).stem();
+}
+
+namespace {
 
 /// The keys `--resume` may change: when and how the run ends and how often it saves itself. Any
 /// other change would not continue the same run.
@@ -73,22 +90,6 @@ void check_resumable(const std::vector<std::string>& overrides) {
                            "new one). Allowed with --resume: " + allowed);
     }
   }
-}
-
-/// Files a previous run left in DIR that would describe it beside this run's frames: its summary,
-/// its checkpoint, its histories and the pictures scripts/plot_collapse.py draws.
-void remove_stale_results(const fs::path& dir) {
-  std::error_code ignored;
-  for (const char* name : {"summary.json", "summary.json.tmp", "checkpoint.h5", "checkpoint.h5.tmp",
-                           "frames.xdmf.tmp", "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png",
-                           sph::HistoryWriter::kBoundaryFile, sph::HistoryWriter::kGaugeFile, "boundary_forces.png",
-                           "gauges.png"})
-    fs::remove(dir / name, ignored);
-  if (fs::is_directory(dir, ignored))
-    for (const auto& entry : fs::directory_iterator(dir, ignored)) {
-      const std::string name = entry.path().filename().string();
-      if (name.starts_with("velocity_t") && name.ends_with(".png")) fs::remove(entry.path(), ignored);
-    }
 }
 
 template <class Model>
@@ -177,14 +178,6 @@ void check_scene_or_resume(const CollapseOptions& o) {
                                          : "soilsph collapse takes a SCENE file or --resume DIR, not both");
 }
 
-/// The run's folder: the one --resume continues, --out, or results/<the scene file's stem>, so that
-/// runs of different scenes never replace each other.
-fs::path run_folder(const CollapseOptions& o) {
-  if (!o.resume.empty()) return o.resume;
-  if (!o.out.empty()) return o.out;
-  return fs::path("results") / fs::path(o.scene).stem();
-}
-
 /// The checkpoint --resume continues from (only the keys that keep it the same run may change), or
 /// nothing for a new run.
 std::optional<sph::Checkpoint> resumed_checkpoint(const CollapseOptions& o, const fs::path& dir) {
@@ -198,7 +191,7 @@ sph::Scene scene_to_run(const CollapseOptions& o, const std::optional<sph::Check
                         const fs::path& dir) {
   if (resumed)
     return sph::parse_scene(resumed->scene_toml, (dir / "checkpoint.h5").string() + " (scene)", o.overrides);
-  return sph::load_scene(o.scene, o.overrides);
+  return std::get<sph::Scene>(sph::load_any_scene(o.scene, o.overrides));
 }
 
 /// The collapse at its start: the scene's particles (relaxed under gravity if it asks), or the
@@ -406,6 +399,9 @@ void report_results(const sph::Summary& summary, const sph::RunStatistics& stats
 void run_collapse(const CollapseOptions& o) {
   check_scene_or_resume(o);
   const fs::path dir = run_folder(o);
+  if (o.resume.empty())  // the dimension is chosen here, once, from the scene
+    if (const sph::AnyScene any = sph::load_any_scene(o.scene, o.overrides); std::holds_alternative<sph::Scene3>(any))
+      return run_collapse_3d(o, std::get<sph::Scene3>(any), dir);
   std::optional<sph::Checkpoint> resumed = resumed_checkpoint(o, dir);
   const sph::Scene scene = scene_to_run(o, resumed, dir);
   const sph::ThreadTuner tuner = thread_tuner(o.threads);

@@ -1,9 +1,9 @@
-// summary.json written by hand: an object of strings and numbers needs no JSON library, only
-// correct string escaping and numbers that read back exactly; the nested "inputs" object is
+// summary.json written by hand (output/json_text.h); the nested "inputs" object is
 // toml++'s JSON rendering of the scene as run.
 #include "sph/output/summary.h"
 
 #include "sph/output/atomic_file.h"
+#include "sph/output/json_text.h"
 
 #include <charconv>
 #include <cmath>
@@ -12,53 +12,6 @@
 
 namespace soilsph::sph {
 namespace {
-
-/// A JSON string literal (RFC 8259 §7): quote, backslash and control characters escaped.
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\b':
-        out += "\\b";
-        break;
-      case '\f':
-        out += "\\f";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char escape[8];
-          std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned>(c));
-          out += escape;
-        } else {
-          out += c;  // UTF-8 bytes pass through unchanged, as JSON allows
-        }
-    }
-  }
-  return out + "\"";
-}
-
-/// Shortest decimal text that reads back to the same double; JSON has no NaN or infinity: null.
-std::string number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  return std::string(text, result.ptr);
-}
 
 /// A nested JSON text indented one level further (it follows a key of the top-level object).
 std::string indented(const std::string& json) {

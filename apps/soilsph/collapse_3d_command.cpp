@@ -1,0 +1,143 @@
+// `soilsph collapse SCENE.toml` for a scene of space ([scene] dimension = 3): the time loop of
+// sph/solver.h in three dimensions (sph/collapse_3d.h), frames in 3D, summary.json with the
+// deposit measures of the scene's shape and, for an axisymmetric column, the laws of Lube et al.
+// (2004) at its aspect ratio beside them. Resuming a 3D run from a checkpoint is not provided yet.
+#include <cmath>
+#include <iostream>
+
+#include "apps/soilsph/collapse_run.h"
+#include "apps/soilsph/commands.h"
+#include "soilsph/version.h"
+#include "sph/collapse_3d.h"
+#include "sph/frame_buffers.h"
+#include "sph/output/atomic_file.h"
+#include "sph/output/frame_writer.h"
+#include "sph/output/json_text.h"
+#include "sph/output/progress.h"
+
+namespace soilsph::cli {
+namespace {
+namespace fs = std::filesystem;
+
+/// "name": value lines of a JSON object, in the order added.
+class JsonFields {
+ public:
+  JsonFields& add(const std::string& key, double value) { return raw(key, sph::number(value)); }
+  JsonFields& add(const std::string& key, std::size_t value) { return raw(key, std::to_string(value)); }
+  JsonFields& add(const std::string& key, bool value) { return raw(key, value ? "true" : "false"); }
+  JsonFields& add(const std::string& key, const std::string& value) { return raw(key, sph::quoted(value)); }
+  JsonFields& add(const std::string& key, const std::vector<double>& values) {
+    std::string list = "[";
+    for (std::size_t k = 0; k < values.size(); ++k) list += (k ? ", " : "") + sph::number(values[k]);
+    return raw(key, list + "]");
+  }
+  JsonFields& raw(const std::string& key, const std::string& json) {
+    text_ += (text_.empty() ? "{\n  " : ",\n  ") + sph::quoted(key) + ": " + json;
+    return *this;
+  }
+  std::string str() const { return text_ + "\n}\n"; }
+
+ private:
+  std::string text_;
+};
+
+/// The figures of the run and its deposit (docs/reference/output-formats.md, "3D runs").
+std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collapse, const sph::RunStatistics& stats,
+                         int threads, const std::string& stop_reason) {
+  const sph::Geometry3& g = scene.geometry;
+  const sph::ParticlesOf<3>& p = collapse.particles();
+  JsonFields j;
+  j.add("dimension", std::size_t{3})
+      .add("shape", g.shape == sph::Geometry3::Shape::AxisymmetricColumn ? "axisymmetric-column" : "slab")
+      .add("model", std::string(model_name(scene.material)))
+      .add("particles", p.soil_count)
+      .add("boundary_particles", p.boundary_count())
+      .add("steps", stats.steps)
+      .add("end_time", stats.end_time)
+      .add("wall_seconds", stats.wall_seconds)
+      .add("particle_steps_per_second",
+           stats.wall_seconds > 0 ? static_cast<double>(stats.steps * p.soil_count) / stats.wall_seconds : 0.0)
+      .add("threads", static_cast<std::size_t>(threads))
+      .add("stopped_at_rest", stats.stopped_at_rest)
+      .add("complete", stats.stop != sph::StopReason::Request)
+      .add("stop_reason", stop_reason)
+      .add("particle_spacing", g.particle_spacing)
+      .add("smoothing_ratio", g.smoothing_ratio)
+      .add("smallest_time_step", stats.smallest_time_step)
+      .add("largest_time_step", stats.largest_time_step)
+      .add("guard_corrections", stats.guard_corrections)
+      .add("fallback_stress_updates", stats.fallback_stress_updates);
+  if (g.shape == sph::Geometry3::Shape::AxisymmetricColumn) {
+    const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
+    const double a = g.column_height / g.column_radius, r0 = g.column_radius;
+    j.add("column_radius_m", r0)
+        .add("column_height_m", g.column_height)
+        .add("aspect_ratio", a)
+        .add("azimuth_span_deg", g.azimuth_span_deg)
+        .add("runout_radius_m", d.runout_radius_m)
+        .add("runout_radius_spread_m", d.runout_radius_spread_m)
+        .add("height_m", d.height_m)
+        .add("sector_runout_m", d.sector_runout_m)
+        .add("lube2004_runout_radius_m", r0 * (1.0 + sph::lube2004::runout_ratio(a)))
+        .add("lube2004_height_m", r0 * sph::lube2004::height_ratio(a))
+        .add("lube2004_time_to_rest_s", sph::lube2004::time_to_rest(g.column_height, g.gravity_magnitude()));
+  } else {
+    const sph::DepositMetrics d = collapse.slab_deposit();
+    j.add("runout_m", d.runout_m)
+        .add("height_m", d.height_m)
+        .add("repose_angle_deg", d.repose_angle_deg)
+        .add("runout_thick_m", d.runout_thick_m);
+  }
+  j.add("version", std::string(kVersion)).add("command_line", invocation()).raw("inputs", sph::scene_json(scene));
+  return j.str();
+}
+
+void report(const sph::Scene3& scene, const sph::Collapse3& collapse, const sph::RunStatistics& stats,
+            const fs::path& dir) {
+  if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
+  if (scene.geometry.shape == sph::Geometry3::Shape::AxisymmetricColumn) {
+    const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
+    std::cout << "runout radius " << d.runout_radius_m << " m (spread over azimuths " << d.runout_radius_spread_m
+              << " m), height on the axis " << d.height_m << " m";
+  } else {
+    const sph::DepositMetrics d = collapse.slab_deposit();
+    std::cout << "runout " << d.runout_m << " m, height " << d.height_m << " m, repose angle " << d.repose_angle_deg
+              << " deg";
+  }
+  std::cout << "; wall guard acted " << stats.guard_corrections << " times\n"
+            << stats.wall_seconds << " s wall; output in " << dir.string() << "/\n";
+}
+}  // namespace
+
+void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const fs::path& dir) {
+  const sph::ThreadTuner tuner = thread_tuner(o.threads);
+  sph::Collapse3 collapse(scene);
+  std::cout << "soilsph collapse (3D): " << collapse.particles().soil_count << " soil and "
+            << collapse.particles().boundary_count() << " boundary particles, up to t = " << scene.geometry.end_time
+            << " s, " << tuner.threads() << " thread(s); output in " << dir.string() << "/\n";
+  fs::create_directories(dir);
+  remove_stale_results(dir);
+  sph::FrameWriter frames(dir, scene.output.fields, 3);
+  sph::replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
+                                            std::string(kVersion) + ")\n# " + invocation() + "\n" +
+                                            sph::scene_toml(scene));
+  sph::FrameBuffers buffers;
+  sph::Progress progress(scene.geometry.end_time);
+  sph::RunStatistics stats;
+  try {
+    stats = collapse.run(
+        tuner,
+        [&](const sph::ParticlesOf<3>& p, double t) { frames.write(buffers.view(p, t, scene.output.fields)); },
+        [&](double t, std::size_t steps) { progress.update(t, steps); });
+    progress.finish();
+  } catch (const std::exception& e) {
+    progress.finish();
+    sph::replace_file(dir / "summary.json", summary_json(scene, collapse, stats, tuner.threads(), e.what()));
+    throw;
+  }
+  const std::string reason = stats.stop == sph::StopReason::Rest ? "at rest" : "end time";
+  sph::replace_file(dir / "summary.json", summary_json(scene, collapse, stats, tuner.threads(), reason));
+  report(scene, collapse, stats, dir);
+}
+
+}  // namespace soilsph::cli

@@ -1,0 +1,74 @@
+#pragma once
+/// @file
+/// One collapse of a scene of space (sph/scene_3d.h), from the scene to the deposit: the particles
+/// and their geostatic state (initial_state_3d.h), the solver setup (solver_3d.cpp), the time loop
+/// of sph/solver.h instantiated for three dimensions, and the deposit measures of its shape: the
+/// axisymmetric column's (analysis/axisymmetric_deposit.h) or the slab's, the 2D column's measures
+/// of the particles seen along z.
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "sph/analysis/axisymmetric_deposit.h"
+#include "sph/analysis/deposit.h"
+#include "sph/initial_state_3d.h"
+#include "sph/solver.h"
+
+namespace soilsph::sph {
+
+class Collapse3 {
+ public:
+  explicit Collapse3(const Scene3& scene)
+      : scene_(scene),
+        particles_(geostatic_particles(scene)),
+        setup_(make_solver_setup(scene)),
+        groups_(material_groups(scene.materials, particles_)) {}
+
+  /// Runs the scene (solver.h, run_groups) and returns its statistics.
+  template <class OnFrame, class OnStep>
+  RunStatistics run(ThreadTuner tuner, OnFrame&& on_frame, OnStep&& on_step, const RunControlOf<3>& control = {}) {
+    return run_groups(groups_, setup_, particles_, std::forward<OnFrame>(on_frame), std::forward<OnStep>(on_step),
+                      tuner, control);
+  }
+  RunStatistics run(ThreadTuner tuner) {
+    return run(
+        tuner, [](const ParticlesOf<3>&, double) {}, [](double, std::size_t) {});
+  }
+
+  /// The axisymmetric column's deposit now: runout radius from the axis (mean and spread over
+  /// sectors of about 10°) and height on the axis.
+  AxisymmetricDeposit axisymmetric_deposit() const {
+    const Geometry3& g = scene_.geometry;
+    return measure_axisymmetric_deposit(soil_positions(), g.deposit_axis, g.particle_spacing, g.azimuth_span_deg,
+                                        default_sectors(g.azimuth_span_deg));
+  }
+  /// The slab's deposit: the 2D column's measures (runout, height, repose angle, runout where the
+  /// deposit is H0/10 thick) of the particles seen along z, the fixed wall at x = W.
+  DepositMetrics slab_deposit() const {
+    const Geometry3& g = scene_.geometry;
+    return measure_deposit({particles_.x.data(), particles_.soil_count}, {particles_.y.data(), particles_.soil_count},
+                           g.column_width, g.particle_spacing, 0.1 * g.column_height);
+  }
+
+  const ParticlesOf<3>& particles() const { return particles_; }
+  const SolverSetupOf<3>& setup() const { return setup_; }
+
+ private:
+  static ParticlesOf<3> geostatic_particles(const Scene3& scene) {
+    ParticlesOf<3> p = build_particles_3d(scene);
+    set_geostatic_state_3d(p, scene);
+    return p;
+  }
+  std::vector<Vec3> soil_positions() const {
+    std::vector<Vec3> x(particles_.soil_count);
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = particles_.position(i);
+    return x;
+  }
+
+  const Scene3& scene_;
+  ParticlesOf<3> particles_;
+  SolverSetupOf<3> setup_;
+  MaterialGroups groups_;
+};
+
+}  // namespace soilsph::sph
