@@ -170,7 +170,7 @@ TEST_CASE("the 2D and 3D readers each refuse the other's scene, and load_any_sce
   CHECK(std::get<Scene3>(slab).overrides.size() == 2);
 }
 
-TEST_CASE("--set changes a 3D scene and the resolved scene reads back to the same scene", "[scene3d]") {
+TEST_CASE("a 3D scene takes --set overrides, and its resolved scene reads back to the same scene", "[scene3d]") {
   const std::vector<std::string> set{"scene.column_height=0.2", "scene.symmetry=\"half\""};
   const Scene3 s = load_scene_3d(kColumn, set);
   CHECK(s.geometry.column_height == 0.2);
