@@ -393,3 +393,19 @@ TEST_CASE("the slab holds the 2D column's particles and geostatic stress in ever
     CHECK(p3.szz[i] == Approx(p2.state[j].stress(2, 2)).epsilon(1e-13));
   }
 }
+
+TEST_CASE("a 3D checkpoint's ghosts get their walls' normals, friction and ids from the scene", "[scene3d]") {
+  const Scene3 s = parse_scene_3d(kSmallColumn, "small.toml");
+  const ParticlesOf<3> built = build_particles_3d(s);
+  ParticlesOf<3> restored;
+  restored.resize(built.soil_count, built.boundary_count());
+  copy_wall_attributes(restored, built);
+  CHECK(restored.wall_nx == built.wall_nx);
+  CHECK(restored.wall_ny == built.wall_ny);
+  CHECK(restored.wall_nz == built.wall_nz);
+  CHECK(restored.wall_friction == built.wall_friction);
+  CHECK(restored.wall_id == built.wall_id);
+  ParticlesOf<3> fewer;
+  fewer.resize(built.soil_count, built.boundary_count() - 1);
+  CHECK_THROWS_AS(copy_wall_attributes(fewer, built), ParameterError);
+}
