@@ -136,14 +136,18 @@ Particles build_particles(const Scene& scene) {
   return p;
 }
 
-void copy_wall_attributes(Particles& to, const Particles& from) {
+template <int dim>
+void copy_wall_attributes(ParticlesOf<dim>& to, const ParticlesOf<dim>& from) {
   if (to.soil_count != from.soil_count || to.boundary_count() != from.boundary_count())
     throw ParameterError("the checkpoint's particles (" + std::to_string(to.soil_count) + " soil, " +
                          std::to_string(to.boundary_count()) + " boundary) are not the scene's (" +
                          std::to_string(from.soil_count) + ", " + std::to_string(from.boundary_count()) + ")");
   to.wall_nx = from.wall_nx, to.wall_ny = from.wall_ny, to.wall_friction = from.wall_friction;
   to.wall_stick = from.wall_stick, to.wall_id = from.wall_id;
+  if constexpr (dim == 3) to.wall_nz = from.wall_nz;
 }
+template void copy_wall_attributes<2>(ParticlesOf<2>&, const ParticlesOf<2>&);
+template void copy_wall_attributes<3>(ParticlesOf<3>&, const ParticlesOf<3>&);
 
 void set_geostatic_state(Particles& p, const Scene& scene) {
   const Geometry& g = scene.geometry;

@@ -19,8 +19,10 @@ namespace soilsph::sph {
 Particles build_particles(const Scene& scene);
 
 /// Copies the ghosts' wall normals, friction and ids, which a checkpoint does not hold, from `from`
-/// (the scene's particles as built) to `to` (a checkpoint's); throws if the counts differ.
-void copy_wall_attributes(Particles& to, const Particles& from);
+/// (the scene's particles as built) to `to` (a checkpoint's); throws if the counts differ. In 2D
+/// and 3D (instantiated for both).
+template <int dim>
+void copy_wall_attributes(ParticlesOf<dim>& to, const ParticlesOf<dim>& from);
 
 /// Geostatic stress for every soil particle, tension-positive, below the free surface that
 /// [initial] stress chooses: "flat-surface", one level at the top of the soil's outline along −g

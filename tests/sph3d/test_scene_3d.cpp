@@ -5,11 +5,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include "sph/initial_state.h"
 #include "sph/initial_state_3d.h"
 #include "sph/scene_3d.h"
 
@@ -170,7 +172,8 @@ TEST_CASE("the 2D and 3D readers each refuse the other's scene, and load_any_sce
   CHECK(std::get<Scene3>(slab).overrides.size() == 2);
 }
 
-TEST_CASE("--set changes a 3D scene and the resolved scene reads back to the same scene", "[scene3d]") {
+TEST_CASE("a 3D scene takes --set overrides, and its resolved scene reads back to the same scene",
+          "[scene3d]") {
   const std::vector<std::string> set{"scene.column_height=0.2", "scene.symmetry=\"half\""};
   const Scene3 s = load_scene_3d(kColumn, set);
   CHECK(s.geometry.column_height == 0.2);
@@ -355,4 +358,54 @@ young_modulus = 1.0e6
     const double yield = mean + q * q / (M * M * mean);
     CHECK(p.state[i].pc == Approx(std::max(2.0 * yield, 100.0)).epsilon(1e-10));
   }
+}
+
+TEST_CASE("the slab holds the 2D column's particles and geostatic stress in every layer", "[scene3d]") {
+  // The 2D reader and builder (sph/scene.h, sph/initial_state.h) are the independent reference.
+  const std::vector<std::string> coarse{"scene.particle_spacing=0.002"};
+  const Scene plane = load_scene(kColumn2d, coarse);
+  const Scene3 slab = load_scene_3d(kSlab, coarse);
+  CHECK(slab.initial.lateral_stress_ratio == plane.initial.lateral_stress_ratio);
+  CHECK(slab.rest.speed == plane.rest.speed);
+  CHECK(slab.rest.duration == plane.rest.duration);
+  CHECK(slab.numerics.cfl == plane.numerics.cfl);
+  CHECK(slab.output.frame_interval == plane.output.frame_interval);
+  CHECK(largest_initial_pressure(slab) == Approx(largest_initial_pressure(plane)).epsilon(1e-14));
+  Particles p2 = build_particles(plane);
+  set_geostatic_state(p2, plane);
+  ParticlesOf<3> p3 = build_particles_3d(slab);
+  set_geostatic_state_3d(p3, slab);
+  const std::size_t layers = 5;  // T/Δp
+  REQUIRE(p3.soil_count == layers * p2.soil_count);
+  std::map<std::pair<long long, long long>, std::size_t> at;
+  for (std::size_t i = 0; i < p2.soil_count; ++i)
+    at[{std::llround(p2.x[i] / 0.002), std::llround(p2.y[i] / 0.002)}] = i;
+  for (std::size_t i = 0; i < p3.soil_count; ++i) {
+    const auto found = at.find({std::llround(p3.x[i] / 0.002), std::llround(p3.y[i] / 0.002)});
+    REQUIRE(found != at.end());
+    const std::size_t j = found->second;
+    CHECK(p3.x[i] == Approx(p2.x[j]).margin(1e-15));
+    CHECK(p3.y[i] == Approx(p2.y[j]).margin(1e-15));
+    CHECK(p3.layer[i] == p2.layer[j]);
+    CHECK(p3.mass[i] == Approx(p2.mass[j] * 0.002).epsilon(1e-14));  // ρΔp³ against ρΔp² per metre
+    CHECK(p3.sxx[i] == Approx(p2.sxx[j]).epsilon(1e-13));
+    CHECK(p3.syy[i] == Approx(p2.syy[j]).epsilon(1e-13));
+    CHECK(p3.szz[i] == Approx(p2.state[j].stress(2, 2)).epsilon(1e-13));
+  }
+}
+
+TEST_CASE("a 3D checkpoint's ghosts get their walls' normals, friction and ids from the scene", "[scene3d]") {
+  const Scene3 s = parse_scene_3d(kSmallColumn, "small.toml");
+  const ParticlesOf<3> built = build_particles_3d(s);
+  ParticlesOf<3> restored;
+  restored.resize(built.soil_count, built.boundary_count());
+  copy_wall_attributes(restored, built);
+  CHECK(restored.wall_nx == built.wall_nx);
+  CHECK(restored.wall_ny == built.wall_ny);
+  CHECK(restored.wall_nz == built.wall_nz);
+  CHECK(restored.wall_friction == built.wall_friction);
+  CHECK(restored.wall_id == built.wall_id);
+  ParticlesOf<3> fewer;
+  fewer.resize(built.soil_count, built.boundary_count() - 1);
+  CHECK_THROWS_AS(copy_wall_attributes(fewer, built), ParameterError);
 }
