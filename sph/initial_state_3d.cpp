@@ -24,6 +24,19 @@ double friction_coefficient(const Wall3& wall) {
   plane_wall.friction_angle = wall.friction_angle;
   return wall_friction_coefficient(plane_wall);
 }
+
+/// A free-slip wall other than ghost b's own that b also lies behind, within the ghost layers (a
+/// corner of two symmetry planes, or the floor's edge below one); null if none.
+const Wall3* second_free_slip_wall(const Geometry3& g, const GhostPoint3& b) {
+  const double depth = (g.boundary_layers + 1e-9) * g.particle_spacing;
+  for (std::size_t w = 0; w < g.walls.size(); ++w) {
+    const Wall3& wall = g.walls[w];
+    if (static_cast<int>(w) == b.wall || wall.kind != WallKind::FreeSlip) continue;
+    const double height = wall.plane.height_above(b.position);
+    if (height < -1e-9 * g.particle_spacing && height > -depth) return &wall;
+  }
+  return nullptr;
+}
 }  // namespace
 
 ParticlesOf<3> build_particles_3d(const Scene3& scene) {
@@ -59,6 +72,10 @@ ParticlesOf<3> build_particles_3d(const Scene3& scene) {
     p.wall_friction[k] = friction_coefficient(wall);
     p.wall_stick[k] = wall.kind == WallKind::NoSlip ? 1.0 : 0.0;
     p.wall_id[k] = b.wall;
+    if (const Wall3* other = second_free_slip_wall(g, b)) {
+      const Vec3 c = other->plane.inward;
+      p.corner_nx[k] = c.x, p.corner_ny[k] = c.y, p.corner_nz[k] = c.z;
+    }
   }
   std::fill(p.density.begin(), p.density.end(), rho);
   std::fill(p.mass.begin(), p.mass.end(), mass);

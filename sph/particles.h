@@ -74,6 +74,10 @@ struct ThirdAxisArrays<3> {
   std::vector<double> lxz, lyz, lzx, lzy, lzz;  ///< soil: velocity gradient ∂v^α/∂x^β (1/s)
   std::vector<double> z0;               ///< soil: position at t = 0 (m)
   std::vector<double> wall_nz, wall_vz;  ///< boundary: wall normal and velocity
+  /// Boundary: the unit normal of a second, free-slip plane the ghost also lies behind (where two
+  /// symmetry planes meet, or the floor meets one), across which its image is reflected too (the
+  /// double image of the soil in a corner); 0 where there is none.
+  std::vector<double> corner_nx, corner_ny, corner_nz;
 };
 
 template <int dim>
@@ -212,7 +216,7 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
   template <class Self, class F>
   static void for_each_wall_array_of(Self& p, F& f) {
     f(p.wall_nx), f(p.wall_ny), f(p.wall_vx), f(p.wall_vy), f(p.wall_friction), f(p.wall_stick);
-    if constexpr (dim == 3) f(p.wall_nz), f(p.wall_vz);
+    if constexpr (dim == 3) f(p.wall_nz), f(p.wall_vz), f(p.corner_nx), f(p.corner_ny), f(p.corner_nz);
   }
 };
 

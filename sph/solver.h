@@ -119,6 +119,10 @@ struct WorkspaceOf {
   PairList<dim> neighbours;
   std::array<std::vector<double>, dim> v_next;  ///< v^{n+½} while a step computes it
   std::vector<double> density_next;             ///< ρ^{n+1} while a step computes it
+  /// x^{n+1} while a step computes it, in space only: there a pair takes x_i − x_j from the
+  /// positions (neighbours/neighbour_list.h), which the drift must not change under the loop that
+  /// still reads them; the plane's pairs hold x_i − x_j, so it drifts in place. Ghosts keep theirs.
+  std::array<std::vector<double>, dim == 3 ? 3 : 0> x_next;
   std::vector<double> volume;  ///< m/ρ^n of every particle, for eq 23 (one division per particle, not per pair)
   std::atomic<bool> any_tension{false};  ///< a particle carries artificial stress this step (loop 1 → 2)
   double previous_dt = 0.0;  ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
@@ -144,6 +148,7 @@ struct WorkspaceOf {
       : density_next(p.density), volume(p.size()), sound_speed(setup.sound_speed) {
     const auto v = velocities(p);
     for (int a = 0; a < dim; ++a) v_next[a].assign(v[a].begin(), v[a].end());
+    if constexpr (dim == 3) x_next = {p.x, p.y, p.z};
   }
   /// v^{n+½} as spans, for the stages that read or write it.
   std::array<std::span<double>, dim> v_next_spans() {
@@ -206,6 +211,8 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
   const auto velocity = p.velocity_arrays();
   for (int a = 0; a < dim; ++a) std::swap(*velocity[a], work.v_next[a]);
   std::swap(p.density, work.density_next);
+  if constexpr (dim == 3)  // the ghosts' entries of both stay as built: the walls of space do not move
+    std::swap(p.x, work.x_next[0]), std::swap(p.y, work.x_next[1]), std::swap(p.z, work.x_next[2]);
   setup.walls.advance(p, work.time, dt);
   work.time += dt;
   const std::size_t pushed = setup.guard.apply(p, work.time);
@@ -320,7 +327,8 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
     for (std::ptrdiff_t s = soil; s < all; ++s)
       mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.v_next_spans());
     // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
-    //    stage of this loop reads x or σ of a neighbour: the pairs hold x_i − x_j). One loop per
+    //    stage of this loop reads σ of a neighbour, nor x in the plane, whose pairs hold x_i − x_j; in
+    //    space, where they are taken from the positions, x^{n+1} goes to work.x_next). One loop per
     //    material, its model chosen once here by every thread alike. The groups are disjoint: one
     //    barrier after the last.
     std::size_t group = 0;
@@ -330,9 +338,14 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
                                                                work.volume, setup.velocity_gradient_correction);
         update_particle_stress(model, fallback, p, i, rates.L, dt, work.failure);
         work.density_next[i] = p.density[i] + dt * rates.density_rate;
-        p.x[i] += dt * work.v_next[0][i];
-        p.y[i] += dt * work.v_next[1][i];
-        if constexpr (dim == 3) p.z[i] += dt * work.v_next[2][i];
+        if constexpr (dim == 2) {
+          p.x[i] += dt * work.v_next[0][i];
+          p.y[i] += dt * work.v_next[1][i];
+        } else {
+          work.x_next[0][i] = p.x[i] + dt * work.v_next[0][i];
+          work.x_next[1][i] = p.y[i] + dt * work.v_next[1][i];
+          work.x_next[2][i] = p.z[i] + dt * work.v_next[2][i];
+        }
       });
     });
 #pragma omp barrier
