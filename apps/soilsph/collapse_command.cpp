@@ -186,12 +186,13 @@ std::optional<sph::Checkpoint> resumed_checkpoint(const CollapseOptions& o, cons
   return sph::read_checkpoint(dir / "checkpoint.h5");
 }
 
-/// The scene with the --set overrides: from its file, or for a resumed run from its checkpoint.
-sph::Scene scene_to_run(const CollapseOptions& o, const std::optional<sph::Checkpoint>& resumed,
-                        const fs::path& dir) {
+/// The scene with the --set overrides, of the plane or of space: from its file, or for a resumed run
+/// from its checkpoint (a 2D run's).
+sph::AnyScene scene_to_run(const CollapseOptions& o, const std::optional<sph::Checkpoint>& resumed,
+                           const fs::path& dir) {
   if (resumed)
     return sph::parse_scene(resumed->scene_toml, (dir / "checkpoint.h5").string() + " (scene)", o.overrides);
-  return std::get<sph::Scene>(sph::load_any_scene(o.scene, o.overrides));
+  return sph::load_any_scene(o.scene, o.overrides);
 }
 
 /// The collapse at its start: the scene's particles (relaxed under gravity if it asks), or the
@@ -399,11 +400,10 @@ void report_results(const sph::Summary& summary, const sph::RunStatistics& stats
 void run_collapse(const CollapseOptions& o) {
   check_scene_or_resume(o);
   const fs::path dir = run_folder(o);
-  if (o.resume.empty())  // the dimension is chosen here, once, from the scene
-    if (const sph::AnyScene any = sph::load_any_scene(o.scene, o.overrides); std::holds_alternative<sph::Scene3>(any))
-      return run_collapse_3d(o, std::get<sph::Scene3>(any), dir);
   std::optional<sph::Checkpoint> resumed = resumed_checkpoint(o, dir);
-  const sph::Scene scene = scene_to_run(o, resumed, dir);
+  const sph::AnyScene any = scene_to_run(o, resumed, dir);
+  if (const auto* space = std::get_if<sph::Scene3>(&any)) return run_collapse_3d(o, *space, dir);  // chosen once
+  const sph::Scene& scene = std::get<sph::Scene>(any);
   const sph::ThreadTuner tuner = thread_tuner(o.threads);
   const sph::RunEstimate estimate = feasible_estimate(scene);
   sph::Collapse collapse = start_collapse(scene, resumed);
