@@ -632,7 +632,7 @@ RunStatistics run_groups(const MaterialGroups& groups, const SolverSetupOf<dim>&
   if (error) std::rethrow_exception(error);
   stats = statistics_now();
   stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
-                          (dim + 2) * p.size() * sizeof(double);  // the *_next buffers, volume
+                          (dim + 2 + work.x_next.size()) * p.size() * sizeof(double);  // the *_next buffers, volume
   return stats;
 }
 
