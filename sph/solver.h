@@ -202,9 +202,35 @@ double current_sound_speed(const MaterialGroups& groups, const SolverSetupOf<dim
   return c;
 }
 
-/// The serial end of a step: swap in v^{n+½} and ρ^{n+1}, the wall guard, the step's largest speed
-/// and number of moving particles, whether the next step must search neighbours, and the blow-up
-/// checks (blow_up.h) in the same pass over the soil.
+/// What the time loop's global decisions read of the soil after a step (rest, blow-up, the next
+/// time step), gathered in one pass: the one reduction of a step over the particles, which a
+/// domain-decomposed run reduces across its ranks (largest speed and the particle that has it, sum
+/// of moving particles and of kinetic energy, the first insane particle; docs/method/mpi-design.md).
+struct SoilTotals {
+  double v2_max = 0.0;   ///< largest |v|² (m²/s²)
+  double kinetic = 0.0;  ///< Σ ½ m |v|² (J; per metre in the plane)
+  std::size_t moving = 0;        ///< particles faster than the rest speed
+  std::size_t fastest = 0;       ///< the particle of v2_max
+  std::size_t first_insane = 0;  ///< the first particle particle_sane() rejects; soil_count: none
+};
+template <int dim>
+SoilTotals soil_totals(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& p, double sound_speed) {
+  const double rest2 = setup.rest.speed * setup.rest.speed, c2 = sound_speed * sound_speed;
+  SoilTotals t{.first_insane = p.soil_count};
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    const Vec<dim> v = p.velocity(i);
+    const double v2 = dot(v, v);
+    if (v2 > t.v2_max) t.v2_max = v2, t.fastest = i;
+    t.moving += v2 > rest2;
+    t.kinetic += 0.5 * p.mass[i] * v2;
+    if (t.first_insane == p.soil_count && !particle_sane(p, i, v2, c2, setup.domain)) t.first_insane = i;
+  }
+  return t;
+}
+
+/// The serial end of a step: swap in v^{n+½} and ρ^{n+1}, the wall guard, the soil's totals
+/// (soil_totals: the step's largest speed, moving particles, blow-up checks of blow_up.h), and
+/// whether the next step must search neighbours.
 template <int dim>
 void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p,
                 WorkspaceOf<dim>& work, double dt) {
@@ -218,27 +244,16 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
   const std::size_t pushed = setup.guard.apply(p, work.time);
   work.guard_corrections += pushed;
   work.previous_dt = dt;
-  const double rest2 = setup.rest.speed * setup.rest.speed, c2 = work.sound_speed * work.sound_speed;
-  double v2_max = 0.0, kinetic = 0.0;
-  std::size_t moving = 0, first_insane = p.soil_count, fastest = 0;
-  for (std::size_t i = 0; i < p.soil_count; ++i) {
-    const Vec<dim> v = p.velocity(i);
-    const double v2 = dot(v, v);
-    if (v2 > v2_max) v2_max = v2, fastest = i;
-    moving += v2 > rest2;
-    kinetic += 0.5 * p.mass[i] * v2;
-    if (first_insane == p.soil_count && !particle_sane(p, i, v2, c2, setup.domain)) first_insane = i;
-  }
-  work.max_speed = std::sqrt(v2_max);
-  work.moving = moving;
-  if (first_insane < p.soil_count) {
-    work.blow_up = particle_blow_up(p, first_insane, work.sound_speed, setup.domain);
-  } else if (!(kinetic <= work.energy_budget)) {
+  const SoilTotals totals = soil_totals(setup, p, work.sound_speed);
+  work.max_speed = std::sqrt(totals.v2_max);
+  work.moving = totals.moving;
+  if (totals.first_insane < p.soil_count) {
+    work.blow_up = particle_blow_up(p, totals.first_insane, work.sound_speed, setup.domain);
+  } else if (!(totals.kinetic <= work.energy_budget)) {
     const std::string unit = dim == 2 ? " J/m" : " J";
-    work.blow_up = "blow-up: the kinetic energy " + std::to_string(kinetic) +
-                   unit + " exceeds all the energy the soil held at the start, " +
-                   std::to_string(work.energy_budget) + unit + " (potential, elastic, kinetic); " +
-                   fastest_particle(p, fastest) + kBlowUpHint;
+    work.blow_up = "blow-up: the kinetic energy " + std::to_string(totals.kinetic) + unit +
+                   " exceeds all the energy the soil held at the start, " + std::to_string(work.energy_budget) +
+                   unit + " (potential, elastic, kinetic); " + fastest_particle(p, totals.fastest) + kBlowUpHint;
   } else if (pushed > std::max<std::size_t>(10, p.soil_count / 100)) {
     work.blow_up = "blow-up: the wall guard pushed " + std::to_string(pushed) +
                    " soil particles back through a wall in one step" + kBlowUpHint;
@@ -632,7 +647,7 @@ RunStatistics run_groups(const MaterialGroups& groups, const SolverSetupOf<dim>&
   if (error) std::rethrow_exception(error);
   stats = statistics_now();
   stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
-                          (dim + 2) * p.size() * sizeof(double);  // the *_next buffers, volume
+                          (dim + 2 + work.x_next.size()) * p.size() * sizeof(double);  // the *_next buffers, volume
   return stats;
 }
 

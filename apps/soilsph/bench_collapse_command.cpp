@@ -16,12 +16,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <span>
 
 #include "apps/soilsph/commands.h"
 #include "apps/soilsph/data_dir.h"
 #include "sph/bench/bare_pair_loop.h"
 #include "sph/collapse.h"
+#include "sph/collapse_3d.h"
 
 namespace soilsph::cli {
 
@@ -75,31 +77,51 @@ std::vector<Variant> variants_on(int cores) {
   return variants;
 }
 
-/// A scene as the bench runs it (no frames written), and its lattice, on which the bare loop runs.
+/// A scene as the bench runs it (no frames written), of the plane or of space, and what its bare
+/// loop runs on: the soil's lattice points in the scene's dimension.
 struct BenchScene {
   std::string name, file;
   std::vector<std::string> overrides;  ///< --set, then no output fields
-  sph::Particles lattice{};
+  int dimension = 2;
+  std::array<std::vector<double>, 3> soil_points{};  ///< x, y[, z] of the soil at t = 0
+  std::size_t particles = 0;                          ///< soil and ghosts
+  std::size_t particle_bytes = 0;                     ///< of the particles' arrays
   double smoothing_length = 0.0;
 
   double bare_rate(double seconds) const {
-    const std::span<const double> x(lattice.x.data(), lattice.soil_count),
-        y(lattice.y.data(), lattice.soil_count);
-    return sph::bare_pair_loop_rate(x, y, smoothing_length, seconds);
+    const auto& x = soil_points;
+    return dimension == 2 ? sph::bare_pair_loop_rate<2>({x[0], x[1]}, smoothing_length, seconds)
+                          : sph::bare_pair_loop_rate<3>({x[0], x[1], x[2]}, smoothing_length, seconds);
   }
   /// Bytes per particle (soil and ghost) of a run whose workspace took `workspace_bytes`.
   double bytes_per_particle(std::size_t workspace_bytes) const {
-    return static_cast<double>(lattice.bytes() + workspace_bytes) / static_cast<double>(lattice.size());
+    return static_cast<double>(particle_bytes + workspace_bytes) / static_cast<double>(particles);
   }
 };
+
+/// Where a bench scene's bare loop runs and how large its particles are, from its built particles.
+template <int dim>
+void take_lattice(BenchScene& s, const sph::ParticlesOf<dim>& p, double smoothing_length) {
+  s.dimension = dim;
+  s.smoothing_length = smoothing_length;
+  s.particles = p.size();
+  s.particle_bytes = p.bytes();
+  for (int d = 0; d < dim; ++d) {
+    const std::span<const double> axis = p.coordinates()[static_cast<std::size_t>(d)];
+    s.soil_points[static_cast<std::size_t>(d)].assign(axis.begin(), axis.begin() + static_cast<long>(p.soil_count));
+  }
+}
 
 BenchScene bench_scene(const BenchOptions& o, const std::string& name) {
   const std::string root = o.root.empty() ? data_dir().string() : o.root;
   BenchScene s{.name = name, .file = root + "/data/scenes/" + name + ".toml", .overrides = o.overrides};
   s.overrides.push_back("output.fields=[]");
-  const sph::Scene reference = sph::load_scene(s.file, s.overrides);
-  s.lattice = sph::build_particles(reference);
-  s.smoothing_length = reference.geometry.smoothing_length();
+  const sph::AnyScene reference = sph::load_any_scene(s.file, s.overrides);
+  if (const auto* space = std::get_if<sph::Scene3>(&reference))
+    take_lattice(s, sph::build_particles_3d(*space), space->geometry.smoothing_length());
+  else
+    take_lattice(s, sph::build_particles(std::get<sph::Scene>(reference)),
+                 std::get<sph::Scene>(reference).geometry.smoothing_length());
   return s;
 }
 
@@ -110,17 +132,34 @@ struct TimedRun {
   double rate;
 };
 
+/// The deposit columns of a 3D run: the slab's 2D measures; the axisymmetric column's runout radius
+/// and height on the axis as runout and height (no repose angle).
+sph::DepositMetrics deposit_of(const sph::Scene3& scene, const sph::Collapse3& collapse) {
+  if (scene.geometry.shape == sph::Geometry3::Shape::Slab) return collapse.slab_deposit();
+  const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  return {.runout_m = d.runout_radius_m, .height_m = d.height_m, .repose_angle_deg = none, .runout_thick_m = none};
+}
+
 TimedRun run_variant(const BenchScene& s, const Variant& v, int cores) {
   std::vector<std::string> overrides = s.overrides;
   if (v.to_end) overrides.push_back("scene.stop_at_rest=false");
-  const sph::Scene scene = sph::load_scene(s.file, overrides);
-  sph::Collapse collapse(scene);
+  const sph::AnyScene any = sph::load_any_scene(s.file, overrides);
   const sph::ThreadTuner tuner =
       v.threads == 0 ? sph::ThreadTuner(cores, true) : sph::ThreadTuner(v.threads, false);
+  const auto timed = [](auto& collapse, const sph::RunStatistics& stats, sph::DepositMetrics deposit) {
+    const double rate = static_cast<double>(collapse.particles().soil_count) * static_cast<double>(stats.steps) /
+                        stats.wall_seconds;
+    return TimedRun{stats, deposit, rate};
+  };
+  if (const auto* space = std::get_if<sph::Scene3>(&any)) {
+    sph::Collapse3 collapse(*space);
+    const sph::RunStatistics stats = collapse.run(tuner);
+    return timed(collapse, stats, deposit_of(*space, collapse));
+  }
+  sph::Collapse collapse(std::get<sph::Scene>(any));
   const sph::RunStatistics stats = collapse.run(tuner);
-  const double rate = static_cast<double>(collapse.particles().soil_count) *
-                      static_cast<double>(stats.steps) / stats.wall_seconds;
-  return {stats, collapse.deposit(), rate};
+  return timed(collapse, stats, collapse.deposit());
 }
 
 std::string threads_label(int threads) {
@@ -227,10 +266,8 @@ std::string markdown_row(const Measurement& m) {
 }
 
 std::string markdown_memory_row(const BenchScene& s, const Measurement& last) {
-  return "| " + s.name + " | memory | | | | | | | " + std::to_string(s.lattice.size()) +
-         " particles (soil + ghost) | " +
-         std::to_string(
-             static_cast<long>((s.lattice.bytes() + last.stats.workspace_bytes) / s.lattice.size())) +
+  return "| " + s.name + " | memory | | | | | | | " + std::to_string(s.particles) + " particles (soil + ghost) | " +
+         std::to_string(static_cast<long>((s.particle_bytes + last.stats.workspace_bytes) / s.particles)) +
          " B/particle | | | | |\n";
 }
 
@@ -325,7 +362,7 @@ void add_bench_collapse_command(CLI::App& bench) {
   cmd->add_option("--out", o->out, "output directory (bench_collapse.csv, bench_collapse.md)")
       ->capture_default_str();
   cmd->add_option("--root", o->root, "folder holding data/scenes/ (default: the shipped data)");
-  cmd->add_option("--scenes", o->scenes, "scene names in data/scenes/")
+  cmd->add_option("--scenes", o->scenes, "scene names in data/scenes/, 2D or 3D (e.g. axisymmetric-column)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--set", o->overrides,
