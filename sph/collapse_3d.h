@@ -11,6 +11,7 @@
 
 #include "sph/analysis/axisymmetric_deposit.h"
 #include "sph/analysis/deposit.h"
+#include "sph/initial_state.h"
 #include "sph/initial_state_3d.h"
 #include "sph/solver.h"
 
@@ -23,6 +24,16 @@ class Collapse3 {
         particles_(geostatic_particles(scene)),
         setup_(make_solver_setup(scene)),
         groups_(material_groups(scene.materials, particles_)) {}
+  /// A collapse that continues from `particles` (a checkpoint's) rather than the initial column: the
+  /// ghosts' wall attributes, which a checkpoint does not hold, and the soil's materials come from the
+  /// scene's particles as built.
+  Collapse3(const Scene3& scene, ParticlesOf<3> particles)
+      : scene_(scene), particles_(std::move(particles)), setup_(make_solver_setup(scene)) {
+    const ParticlesOf<3> built = build_particles_3d(scene);
+    copy_wall_attributes(particles_, built);
+    particles_.material = built.material;
+    groups_ = material_groups(scene.materials, particles_);
+  }
 
   /// Runs the scene (solver.h, run_groups) and returns its statistics.
   template <class OnFrame, class OnStep>

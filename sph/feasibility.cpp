@@ -66,6 +66,25 @@ RunEstimate estimate_run(const Scene& scene) {
   return e;
 }
 
+template <int dim>
+RunEstimate measure_run(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& p) {
+  PairList<dim> pairs;
+  pairs.search(p.coordinates(), setup.kernel, p.soil_count);
+  const auto n = static_cast<double>(p.size());
+  RunEstimate e;
+  e.soil_particles = p.soil_count;
+  e.boundary_particles = p.boundary_count();
+  e.memory_bytes = static_cast<double>(p.bytes()) +
+                   n * static_cast<double>(pairs.bytes_per_particle() + (dim + 2) * sizeof(double));
+  e.sound_speed = setup.sound_speed;
+  e.time_step = setup.initial_time_step();
+  e.steps = setup.end_time / e.time_step;
+  e.seconds = e.steps * n / kAssumedThroughput;  // an upper bound in 3D too (docs/performance.md)
+  return e;
+}
+template RunEstimate measure_run<2>(const SolverSetupOf<2>&, const ParticlesOf<2>&);
+template RunEstimate measure_run<3>(const SolverSetupOf<3>&, const ParticlesOf<3>&);
+
 namespace {
 /// Throws the message with the `--set` options it may come from: a refusal must name the option
 /// that made the scene what it is, not only the file.

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "sph/scene.h"
+#include "sph/solver.h"
 
 namespace soilsph::sph {
 
@@ -31,6 +32,13 @@ inline constexpr double kBytesPerParticle = 2700;
 inline constexpr double kMaxFrames = 1e4;
 
 RunEstimate estimate_run(const Scene& scene);
+
+/// The same measured on a scene's particles as built (a 3D scene's, whose counts depend on how its
+/// shapes fill the lattice): the counts; the memory as the particles' arrays (ParticlesOf::bytes()),
+/// the neighbour list after one search of them (bytes_per_particle()) and the solver's step buffers
+/// (RunStatistics::workspace_bytes); the step at rest and the steps and run time as estimate_run's.
+template <int dim>
+RunEstimate measure_run(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& particles);
 
 /// Throws ParameterError, naming the scene, the numbers and the key that changes them, if the time
 /// step is not finite and positive, the soil is too soft to carry its own weight (P-wave speed below

@@ -144,7 +144,9 @@ void copy_wall_attributes(ParticlesOf<dim>& to, const ParticlesOf<dim>& from) {
                          std::to_string(from.soil_count) + ", " + std::to_string(from.boundary_count()) + ")");
   to.wall_nx = from.wall_nx, to.wall_ny = from.wall_ny, to.wall_friction = from.wall_friction;
   to.wall_stick = from.wall_stick, to.wall_id = from.wall_id;
-  if constexpr (dim == 3) to.wall_nz = from.wall_nz;
+  if constexpr (dim == 3)
+    to.wall_nz = from.wall_nz, to.corner_nx = from.corner_nx, to.corner_ny = from.corner_ny,
+    to.corner_nz = from.corner_nz;
 }
 template void copy_wall_attributes<2>(ParticlesOf<2>&, const ParticlesOf<2>&);
 template void copy_wall_attributes<3>(ParticlesOf<3>&, const ParticlesOf<3>&);

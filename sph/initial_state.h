@@ -18,9 +18,9 @@ namespace soilsph::sph {
 /// and mass of the soil particle nearest to it.
 Particles build_particles(const Scene& scene);
 
-/// Copies the ghosts' wall normals, friction and ids, which a checkpoint does not hold, from `from`
-/// (the scene's particles as built) to `to` (a checkpoint's); throws if the counts differ. In 2D
-/// and 3D (instantiated for both).
+/// Copies the ghosts' wall normals (in space also the corner normals), friction and ids, which a
+/// checkpoint does not hold, from `from` (the scene's particles as built) to `to` (a checkpoint's);
+/// throws if the counts differ. In 2D and 3D (instantiated for both).
 template <int dim>
 void copy_wall_attributes(ParticlesOf<dim>& to, const ParticlesOf<dim>& from);
 

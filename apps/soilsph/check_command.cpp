@@ -1,7 +1,8 @@
 // `soilsph check SCENE.toml [--set KEY=VALUE]...`: what a collapse of the scene would be, without
 // running it: the particle counts, the memory, the time step and the steps to the end time, the
 // estimated run time, and the scene with every key resolved. A scene `collapse` would refuse is
-// refused here with the same message (the same steps: apps/soilsph/collapse_preparation.h).
+// refused here with the same message (the same steps: apps/soilsph/collapse_preparation.h). A 3D
+// scene is built as its collapse starts (sph/collapse_3d.h) and its memory measured on it.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 
 #include "apps/soilsph/collapse_preparation.h"
 #include "apps/soilsph/commands.h"
+#include "sph/collapse_3d.h"
 #include "sph/solver.h"
 
 namespace soilsph::cli {
@@ -20,7 +22,7 @@ struct CheckOptions {
 };
 
 /// The distinct models of the scene's materials, joined by " + " (as summary.json's "model").
-std::string models_of(const sph::Scene& scene) {
+std::string models_of(const sph::SceneSettings& scene) {
   std::vector<std::string_view> seen;
   std::string models;
   for (const Material& material : scene.materials) {
@@ -39,16 +41,18 @@ std::string megabytes(double bytes) {
   return text;
 }
 
-void print_costs(const sph::Scene& scene, const sph::Particles& particles, const sph::SolverSetup& setup,
-                 const sph::RunEstimate& estimate) {
-  std::cout << scene.source << ": " << models_of(scene) << "\n"
+template <int dim>
+void print_costs(const sph::SceneSettings& scene, double end_time, const sph::ParticlesOf<dim>& particles,
+                 const sph::SolverSetupOf<dim>& setup, const sph::RunEstimate& estimate) {
+  std::cout << scene.source << ": " << models_of(scene) << (dim == 3 ? ", 3D" : "") << "\n"
             << "  particles: " << particles.soil_count << " soil + " << particles.boundary_count()
             << " boundary\n"
-            << "  memory: about " << megabytes(estimate.memory_bytes) << " MB\n"
+            << "  memory: about " << megabytes(estimate.memory_bytes) << " MB"
+            << (dim == 3 ? " (measured on the particles as built and their neighbour list)" : "") << "\n"
             << "  smoothing length h = " << setup.kernel.smoothing_length()
             << " m, P-wave speed c = " << setup.sound_speed
             << " m/s, time step at rest dt = " << setup.initial_time_step() << " s\n"
-            << "  end time " << scene.geometry.end_time << " s"
+            << "  end time " << end_time << " s"
             << (scene.rest.enabled ? " (or earlier at rest)" : "") << ": at least "
             << static_cast<long long>(std::ceil(estimate.steps)) << " steps\n"
             << "  run time: at most about " << sph::human_duration(estimate.seconds) << " on one thread (at "
@@ -57,14 +61,28 @@ void print_costs(const sph::Scene& scene, const sph::Particles& particles, const
     std::cout << "  the gravity-loading relaxation runs at the start of the collapse (not here)\n";
 }
 
-void run_check(const CheckOptions& o) {
-  const sph::Scene scene = sph::load_scene(o.scene, o.overrides);
+void check_plane(const sph::Scene& scene) {
   const sph::RunEstimate estimate = feasible_estimate(scene);
   const sph::Particles particles = starting_particles(scene);
   const sph::SolverSetup setup = sph::make_solver_setup(scene);
   (void)scene_histories(scene, particles, setup);  // places the gauges, or refuses them
-  print_costs(scene, particles, setup, estimate);
+  print_costs(scene, scene.geometry.end_time, particles, setup, estimate);
   std::cout << "\n# the scene as it would run, every key resolved\n" << sph::scene_toml(scene);
+}
+
+void check_space(const sph::Scene3& scene) {
+  const sph::Collapse3 collapse = blaming_overrides(scene.overrides, [&] { return sph::Collapse3(scene); });
+  const sph::RunEstimate estimate = sph::measure_run(collapse.setup(), collapse.particles());
+  print_costs(scene, scene.geometry.end_time, collapse.particles(), collapse.setup(), estimate);
+  std::cout << "\n# the scene as it would run, every key resolved\n" << sph::scene_toml(scene);
+}
+
+void run_check(const CheckOptions& o) {
+  const sph::AnyScene scene = sph::load_any_scene(o.scene, o.overrides);
+  if (const auto* space = std::get_if<sph::Scene3>(&scene))
+    check_space(*space);
+  else
+    check_plane(std::get<sph::Scene>(scene));
 }
 }  // namespace
 

@@ -1,9 +1,11 @@
 // `soilsph collapse SCENE.toml` for a scene of space ([scene] dimension = 3): the time loop of
 // sph/solver.h in three dimensions (sph/collapse_3d.h), frames in 3D, summary.json with the
 // deposit measures of the scene's shape and, for an axisymmetric column, the laws of Lube et al.
-// (2004) at its aspect ratio beside them. Resuming a 3D run from a checkpoint is not provided yet.
+// (2004) at its aspect ratio beside them; checkpoints, a clean stop on a signal and `--resume DIR` as
+// for a scene of the plane (collapse_command.cpp).
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "apps/soilsph/collapse_run.h"
 #include "apps/soilsph/commands.h"
@@ -11,6 +13,7 @@
 #include "sph/collapse_3d.h"
 #include "sph/frame_buffers.h"
 #include "sph/output/atomic_file.h"
+#include "sph/output/checkpoint.h"
 #include "sph/output/frame_writer.h"
 #include "sph/output/json_text.h"
 #include "sph/output/progress.h"
@@ -41,9 +44,18 @@ class JsonFields {
   std::string text_;
 };
 
+/// Where a run stands: its statistics so far and whether and why it stopped.
+struct RunRecord {
+  sph::RunStatistics stats;
+  int threads = 1;
+  bool complete = false;
+  std::string stop_reason;            ///< "running" until it stops
+  std::optional<double> resumed_from;  ///< the checkpoint's time (s) of a resumed run
+};
+
 /// The figures of the run and its deposit (docs/reference/output-formats.md, "3D runs").
-std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collapse, const sph::RunStatistics& stats,
-                         int threads, const std::string& stop_reason) {
+std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collapse, const RunRecord& record) {
+  const sph::RunStatistics& stats = record.stats;
   const sph::Geometry3& g = scene.geometry;
   const sph::ParticlesOf<3>& p = collapse.particles();
   JsonFields j;
@@ -57,10 +69,11 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
       .add("wall_seconds", stats.wall_seconds)
       .add("particle_steps_per_second",
            stats.wall_seconds > 0 ? static_cast<double>(stats.steps * p.soil_count) / stats.wall_seconds : 0.0)
-      .add("threads", static_cast<std::size_t>(threads))
+      .add("threads", static_cast<std::size_t>(record.threads))
       .add("stopped_at_rest", stats.stopped_at_rest)
-      .add("complete", stats.stop != sph::StopReason::Request)
-      .add("stop_reason", stop_reason)
+      .add("complete", record.complete)
+      .add("stop_reason", record.stop_reason)
+      .raw("resumed_from", record.resumed_from ? sph::number(*record.resumed_from) : "null")
       .add("particle_spacing", g.particle_spacing)
       .add("smoothing_ratio", g.smoothing_ratio)
       .add("smallest_time_step", stats.smallest_time_step)
@@ -107,37 +120,64 @@ void report(const sph::Scene3& scene, const sph::Collapse3& collapse, const sph:
   std::cout << "; wall guard acted " << stats.guard_corrections << " times\n"
             << stats.wall_seconds << " s wall; output in " << dir.string() << "/\n";
 }
+/// The collapse at its start: the scene's column, or the checkpoint's particles.
+sph::Collapse3 start_collapse(const sph::Scene3& scene, std::optional<sph::CheckpointOf<3>>& resumed) {
+  return resumed ? sph::Collapse3(scene, std::move(resumed->particles)) : sph::Collapse3(scene);
+}
+
 }  // namespace
 
 void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const fs::path& dir) {
   const sph::ThreadTuner tuner = thread_tuner(o.threads);
-  sph::Collapse3 collapse(scene);
-  std::cout << "soilsph collapse (3D): " << collapse.particles().soil_count << " soil and "
-            << collapse.particles().boundary_count() << " boundary particles, up to t = " << scene.geometry.end_time
-            << " s, " << tuner.threads() << " thread(s); output in " << dir.string() << "/\n";
+  std::optional<sph::CheckpointOf<3>> resumed;
+  if (!o.resume.empty()) resumed = sph::read_checkpoint<3>(dir / "checkpoint.h5");
+  sph::Collapse3 collapse = start_collapse(scene, resumed);
+  std::cout << "soilsph collapse (3D): "
+            << (resumed ? "resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s, " : "")
+            << collapse.particles().soil_count << " soil and " << collapse.particles().boundary_count()
+            << " boundary particles, up to t = " << scene.geometry.end_time << " s, " << tuner.threads()
+            << " thread(s); output in " << dir.string() << "/\n";
   fs::create_directories(dir);
-  remove_stale_results(dir);
-  sph::FrameWriter frames(dir, scene.output.fields, 3);
+  if (!resumed) remove_stale_results(dir);
+  sph::FrameWriter frames =
+      resumed ? sph::FrameWriter::continuing(dir, scene.output.fields, resumed->loop.stats.end_time, 3)
+              : sph::FrameWriter(dir, scene.output.fields, 3);
+  const std::string scene_text = sph::scene_toml(scene);
   sph::replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
-                                            std::string(kVersion) + ")\n# " + invocation() + "\n" +
-                                            sph::scene_toml(scene));
+                                            std::string(kVersion) + ")\n# " + invocation() + "\n" + scene_text);
+  RunRecord record{.stats = resumed ? resumed->loop.stats : sph::RunStatistics{},
+                   .threads = tuner.threads(),
+                   .complete = false,
+                   .stop_reason = "running",
+                   .resumed_from = resumed ? std::optional(resumed->loop.stats.end_time) : std::nullopt};
+  sph::replace_file(dir / "summary.json", summary_json(scene, collapse, record));  // says so if killed
+
+  const StopSignal signal;
+  sph::RunControlOf<3> control;
+  control.stop_requested = [&signal] { return signal.received() != 0; };
+  control.checkpoint = [&](const sph::ParticlesOf<3>& p, const sph::LoopState& loop) {
+    sph::write_checkpoint(dir / "checkpoint.h5", p, loop, scene_text);
+  };
+  if (resumed) control.resume = &resumed->loop;
   sph::FrameBuffers buffers;
   sph::Progress progress(scene.geometry.end_time);
-  sph::RunStatistics stats;
   try {
-    stats = collapse.run(
+    record.stats = collapse.run(
         tuner,
         [&](const sph::ParticlesOf<3>& p, double t) { frames.write(buffers.view(p, t, scene.output.fields)); },
-        [&](double t, std::size_t steps) { progress.update(t, steps); });
+        [&](double t, std::size_t steps) { progress.update(t, steps); }, control);
     progress.finish();
   } catch (const std::exception& e) {
     progress.finish();
-    sph::replace_file(dir / "summary.json", summary_json(scene, collapse, stats, tuner.threads(), e.what()));
+    record.stop_reason = e.what();
+    sph::replace_file(dir / "summary.json", summary_json(scene, collapse, record));
     throw;
   }
-  const std::string reason = stats.stop == sph::StopReason::Rest ? "at rest" : "end time";
-  sph::replace_file(dir / "summary.json", summary_json(scene, collapse, stats, tuner.threads(), reason));
-  report(scene, collapse, stats, dir);
+  record.complete = record.stats.stop != sph::StopReason::Request;
+  record.stop_reason = stop_reason(record.stats, signal);
+  sph::replace_file(dir / "summary.json", summary_json(scene, collapse, record));
+  exit_if_stopped_by_signal(record.stats, signal, dir);
+  report(scene, collapse, record.stats, dir);
 }
 
 }  // namespace soilsph::cli

@@ -70,6 +70,20 @@ fs::path run_folder(const CollapseOptions& o) {
   return fs::path("results") / fs::path(o.scene).stem();
 }
 
+std::string stop_reason(const sph::RunStatistics& stats, const StopSignal& signal) {
+  return stats.stop == sph::StopReason::Rest      ? "at rest"
+         : stats.stop == sph::StopReason::EndTime ? "end time"
+                                                  : std::string("signal ") + StopSignal::name(signal.received());
+}
+
+void exit_if_stopped_by_signal(const sph::RunStatistics& stats, const StopSignal& signal, const fs::path& dir) {
+  if (stats.stop != sph::StopReason::Request) return;
+  std::cerr << "soilsph collapse: stopped by " << StopSignal::name(signal.received()) << " at t = " << stats.end_time
+            << " s after " << stats.steps << " steps; frames, checkpoint and summary.json are in " << dir.string()
+            << "/; continue with: soilsph collapse --resume " << dir.string() << '\n';
+  throw ExitCode{128 + signal.received()};
+}
+
 namespace {
 
 /// The keys `--resume` may change: when and how the run ends and how often it saves itself. Any
@@ -178,21 +192,19 @@ void check_scene_or_resume(const CollapseOptions& o) {
                                          : "soilsph collapse takes a SCENE file or --resume DIR, not both");
 }
 
-/// The checkpoint --resume continues from (only the keys that keep it the same run may change), or
-/// nothing for a new run.
-std::optional<sph::Checkpoint> resumed_checkpoint(const CollapseOptions& o, const fs::path& dir) {
-  if (o.resume.empty()) return std::nullopt;
+/// The scene with the --set overrides, of the plane or of space: from its file, or for a resumed run
+/// from its checkpoint (only the keys that keep it the same run may change).
+sph::AnyScene scene_to_run(const CollapseOptions& o, const fs::path& dir) {
+  if (o.resume.empty()) return sph::load_any_scene(o.scene, o.overrides);
   check_resumable(o.overrides);
-  return sph::read_checkpoint(dir / "checkpoint.h5");
+  const fs::path file = dir / "checkpoint.h5";
+  return sph::parse_any_scene(sph::read_checkpoint_scene(file), file.string() + " (scene)", o.overrides);
 }
 
-/// The scene with the --set overrides, of the plane or of space: from its file, or for a resumed run
-/// from its checkpoint (a 2D run's).
-sph::AnyScene scene_to_run(const CollapseOptions& o, const std::optional<sph::Checkpoint>& resumed,
-                           const fs::path& dir) {
-  if (resumed)
-    return sph::parse_scene(resumed->scene_toml, (dir / "checkpoint.h5").string() + " (scene)", o.overrides);
-  return sph::load_any_scene(o.scene, o.overrides);
+/// The checkpoint of the 2D run --resume continues from, or nothing for a new run.
+std::optional<sph::Checkpoint> resumed_checkpoint(const CollapseOptions& o, const fs::path& dir) {
+  if (o.resume.empty()) return std::nullopt;
+  return sph::read_checkpoint(dir / "checkpoint.h5");
 }
 
 /// The collapse at its start: the scene's particles (relaxed under gravity if it asks), or the
@@ -328,22 +340,8 @@ void record_end(sph::Summary& summary, const sph::RunStatistics& stats, const sp
                 const StopSignal& signal, const fs::path& dir) {
   add_results(summary, stats, collapse);
   summary.complete = stats.stop != sph::StopReason::Request;
-  summary.stop_reason = stats.stop == sph::StopReason::Rest ? "at rest"
-                        : stats.stop == sph::StopReason::EndTime
-                            ? "end time"
-                            : std::string("signal ") + StopSignal::name(signal.received());
+  summary.stop_reason = stop_reason(stats, signal);
   sph::write_summary_json(dir / "summary.json", summary);
-}
-
-/// A run stopped by a signal says where it is saved and how to go on, and exits with 128 + the signal.
-void exit_if_stopped_by_signal(const sph::RunStatistics& stats, const StopSignal& signal,
-                               const fs::path& dir) {
-  if (stats.stop != sph::StopReason::Request) return;
-  std::cerr << "soilsph collapse: stopped by " << StopSignal::name(signal.received())
-            << " at t = " << stats.end_time << " s after " << stats.steps
-            << " steps; frames, checkpoint and summary.json are in " << dir.string()
-            << "/; continue with: soilsph collapse --resume " << dir.string() << '\n';
-  throw ExitCode{128 + signal.received()};
 }
 
 void warn_if_wall_guard_acted(const sph::RunStatistics& stats, const sph::Scene& scene) {
@@ -400,10 +398,10 @@ void report_results(const sph::Summary& summary, const sph::RunStatistics& stats
 void run_collapse(const CollapseOptions& o) {
   check_scene_or_resume(o);
   const fs::path dir = run_folder(o);
-  std::optional<sph::Checkpoint> resumed = resumed_checkpoint(o, dir);
-  const sph::AnyScene any = scene_to_run(o, resumed, dir);
+  const sph::AnyScene any = scene_to_run(o, dir);
   if (const auto* space = std::get_if<sph::Scene3>(&any)) return run_collapse_3d(o, *space, dir);  // chosen once
   const sph::Scene& scene = std::get<sph::Scene>(any);
+  std::optional<sph::Checkpoint> resumed = resumed_checkpoint(o, dir);
   const sph::ThreadTuner tuner = thread_tuner(o.threads);
   const sph::RunEstimate estimate = feasible_estimate(scene);
   sph::Collapse collapse = start_collapse(scene, resumed);

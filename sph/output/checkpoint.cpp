@@ -66,13 +66,16 @@ void for_each_count(Loop& l, F&& f) {
 }
 }  // namespace
 
-void write_checkpoint(const std::filesystem::path& file, const Particles& p, const LoopState& loop,
+template <int dim>
+void write_checkpoint(const std::filesystem::path& file, const ParticlesOf<dim>& p, const LoopState& loop,
                       const std::string& scene_toml) {
   std::filesystem::path temporary = file;
   temporary += ".tmp";
   const std::size_t n = p.size(), soil = p.soil_count;
+  constexpr std::size_t soil_arrays = dim == 2 ? 8 : 16;  // about: a, ρ rate, L, x0
   ensure_room(temporary,
-              8 * (Particles::kParticleArrays * n + (kStateValues + kUmatValues + 8) * soil + 2 * n) +
+              8 * (ParticlesOf<dim>::kParticleArrays * n + (kStateValues + kUmatValues + soil_arrays) * soil +
+                   dim * n) +
                   scene_toml.size() + 64 * 1024);
   try {
     const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
@@ -81,6 +84,7 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
     const std::string where = file.string() + ":/";
     hdf5::write_string_attribute(h5, "format", kFormat);
     hdf5::write_string_attribute(h5, "scene", scene_toml);
+    if constexpr (dim == 3) hdf5::write_double_attribute(h5, "dimension", 3.0);  // absent: the plane
     hdf5::write_double_attribute(h5, "soil_count", static_cast<double>(soil));
     hdf5::write_double_attribute(h5, "rest_moved", loop.rest.moved ? 1.0 : 0.0);
     for_each_number(loop, [&](const char* name, double v) { hdf5::write_double_attribute(h5, name, v); });
@@ -104,6 +108,7 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
                         p.boundary_kind.data(), where);
     hdf5::write_doubles(h5, "search_x", loop.search_x, where);
     hdf5::write_doubles(h5, "search_y", loop.search_y, where);
+    if constexpr (dim == 3) hdf5::write_doubles(h5, "search_z", loop.search_z, where);
     h5.close("close " + temporary.string());
   } catch (...) {
     std::error_code ignored;
@@ -115,20 +120,42 @@ void write_checkpoint(const std::filesystem::path& file, const Particles& p, con
   if (error) throw std::runtime_error("cannot replace " + file.string() + ": " + error.message());
 }
 
-Checkpoint read_checkpoint(const std::filesystem::path& file) {
+namespace {
+/// The checkpoint FILE opened for reading (check_format next).
+Handle open_checkpoint(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file))
     throw std::runtime_error(file.string() +
                              " does not exist: nothing to resume (a run writes it every "
                              "[output] checkpoint_interval, at rest, on a signal and before its end)");
   const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
-  const Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, access), H5Fclose, "open " + file.string());
-  const std::string where = file.string() + ":/";
+  return Handle(H5Fopen(file.c_str(), H5F_ACC_RDONLY, access), H5Fclose, "open " + file.string());
+}
+
+void check_format(hid_t h5, const std::filesystem::path& file) {
   const std::string format = H5Aexists(h5, "format") > 0 ? hdf5::read_string_attribute(h5, "format") : "";
   if (format != kFormat)
     throw std::runtime_error(
         file.string() + " is not a soilsph checkpoint of this version (format \"" + kFormat + "\"" +
         (format.empty() ? std::string() : ", the file's is \"" + format + "\"") + "): rerun the scene");
-  Checkpoint c;
+}
+}  // namespace
+
+std::string read_checkpoint_scene(const std::filesystem::path& file) {
+  const Handle h5 = open_checkpoint(file);
+  check_format(h5, file);
+  return hdf5::read_string_attribute(h5, "scene");
+}
+
+template <int dim>
+CheckpointOf<dim> read_checkpoint(const std::filesystem::path& file) {
+  const Handle h5 = open_checkpoint(file);
+  check_format(h5, file);
+  const std::string where = file.string() + ":/";
+  const int saved = H5Aexists(h5, "dimension") > 0 ? static_cast<int>(hdf5::read_double_attribute(h5, "dimension")) : 2;
+  if (saved != dim)
+    throw std::runtime_error(file.string() + " is the checkpoint of a " + std::to_string(saved) +
+                             "D run, not of a " + std::to_string(dim) + "D one");
+  CheckpointOf<dim> c;
   c.scene_toml = hdf5::read_string_attribute(h5, "scene");
   const auto soil = static_cast<std::size_t>(hdf5::read_double_attribute(h5, "soil_count"));
   {
@@ -163,7 +190,19 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
                      where);
   hdf5::read_dataset(h5, "search_y", H5T_NATIVE_DOUBLE, c.loop.search_y.size(), c.loop.search_y.data(),
                      where);
+  if constexpr (dim == 3) {
+    c.loop.search_z.resize(c.particles.size());
+    hdf5::read_dataset(h5, "search_z", H5T_NATIVE_DOUBLE, c.loop.search_z.size(), c.loop.search_z.data(),
+                       where);
+  }
   return c;
 }
+
+template void write_checkpoint<2>(const std::filesystem::path&, const ParticlesOf<2>&, const LoopState&,
+                                  const std::string&);
+template void write_checkpoint<3>(const std::filesystem::path&, const ParticlesOf<3>&, const LoopState&,
+                                  const std::string&);
+template CheckpointOf<2> read_checkpoint<2>(const std::filesystem::path&);
+template CheckpointOf<3> read_checkpoint<3>(const std::filesystem::path&);
 
 }  // namespace soilsph::sph

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """`soilsph check` and `soilsph collapse` as a user meets them, each run in its own temporary folder.
 
-- check refuses a bad scene with exit 2 and the very message collapse gives; on a good scene it
-  prints the particle counts collapse announces and the scene that collapse then writes as run;
+- check refuses a bad scene with exit 2 and the very message collapse gives; on a good scene (2D
+  and 3D) it prints the particle counts collapse announces and the scene that collapse then writes
+  as run;
 - collapse without --out writes to results/<the scene file's stem>;
 - a scene of regions without [deposit] reports its deposit measures as undefined (null in
   summary.json, a console line asking for [deposit]); the region column with its [deposit] table
@@ -55,23 +56,30 @@ with tempfile.TemporaryDirectory() as temp:
                f"{label}: check says {checked.stderr!r}, collapse {collapsed.stderr!r}")
         expect(not (temp / "refused").exists(), f"collapse {label} wrote its folder before refusing")
 
-    # A good scene: check's counts and resolved scene are what the collapse then runs.
-    file = str(scenes / "two-material-column.toml")
-    checked = run(["check", file, *QUICK[:4]], temp)
-    expect(checked.returncode == 0, f"check two-material-column: exit {checked.returncode}: {checked.stderr}")
-    collapsed = run(["collapse", file, "--out", str(temp / "two"), *QUICK], temp)
-    expect(collapsed.returncode == 0, f"collapse two-material-column: exit {collapsed.returncode}: {collapsed.stderr}")
-    counts = re.search(r"(\d+) soil \+ (\d+) boundary", collapsed.stdout)
-    expect(counts and f"particles: {counts[1]} soil + {counts[2]} boundary" in checked.stdout,
-           f"check's particle counts differ from collapse's: {checked.stdout[:300]!r}")
-    for word in ("memory: about", "MB", "steps", "run time: at most about"):
-        expect(word in checked.stdout, f"check prints no {word!r}")
-    resolved = checked.stdout.split("# the scene as it would run, every key resolved\n", 1)
-    expect(len(resolved) == 2, "check prints no resolved scene")
-    if len(resolved) == 2:
-        as_run = tomllib.loads((temp / "two" / "scene.toml").read_text())
-        expect(tomllib.loads(resolved[1]) == as_run, "check's resolved scene differs from the collapse's scene.toml")
-    summary = json.loads((temp / "two" / "summary.json").read_text())
+    def check_agrees(scene, check_args, collapse_args):
+        """check's counts and resolved scene are what the collapse then runs; returns its summary."""
+        file, out = str(scenes / f"{scene}.toml"), temp / scene
+        checked = run(["check", file, *check_args], temp)
+        expect(checked.returncode == 0, f"check {scene}: exit {checked.returncode}: {checked.stderr}")
+        collapsed = run(["collapse", file, "--out", str(out), *check_args, *collapse_args], temp)
+        expect(collapsed.returncode == 0, f"collapse {scene}: exit {collapsed.returncode}: {collapsed.stderr}")
+        counts = re.search(r"(\d+) soil (\+|and) (\d+) boundary", collapsed.stdout)
+        expect(counts and f"particles: {counts[1]} soil + {counts[3]} boundary" in checked.stdout,
+               f"{scene}: check's particle counts differ from collapse's: {checked.stdout[:300]!r}")
+        for word in ("memory: about", "MB", "steps", "run time: at most about"):
+            expect(word in checked.stdout, f"check {scene} prints no {word!r}")
+        resolved = checked.stdout.split("# the scene as it would run, every key resolved\n", 1)
+        expect(len(resolved) == 2, f"check {scene} prints no resolved scene")
+        if len(resolved) == 2:
+            as_run = tomllib.loads((out / "scene.toml").read_text())
+            expect(tomllib.loads(resolved[1]) == as_run, f"check's resolved {scene} differs from the collapse's scene.toml")
+        return collapsed
+
+    # A good scene of the plane and one of space.
+    collapsed = check_agrees("two-material-column", QUICK[:4], QUICK[4:])
+    check_agrees("axisymmetric-column", ["--set", "scene.particle_spacing=0.01", "--set", "scene.end_time=0.04"],
+                 ["--threads", "1"])
+    summary = json.loads((temp / "two-material-column" / "summary.json").read_text())
     expect(all(isinstance(summary[k], (int, float)) for k in ("runout_m", "height_m", "repose_angle_deg")),
            "the region column with [deposit] has no deposit measures")
     expect("runout " in collapsed.stdout, "the region column's console has no runout")

@@ -3,6 +3,7 @@
 // executable as a child process on a coarse scene (4 mm, 176 particles) and reads what it left.
 #include <hdf5.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
@@ -63,15 +64,20 @@ std::string text_of(const fs::path& file) {
   return out.str();
 }
 
-/// Every dataset of every frame of DIR/frames.h5, read back (throws if any cannot be); returns the
-/// last frame's datasets by name and the number of frames.
+/// The datasets of a frame of a 2D run, and of a 3D run (frame_writer.h).
+const std::vector<std::string> kPlaneSets{"position", "velocity", "sxx", "syy", "szz", "sxy", "p", "q", "density"};
+const std::vector<std::string> kSpaceSets{"position", "velocity", "sxx", "syy", "szz", "sxy",
+                                          "sxz",      "syz",      "p",   "q",   "density"};
+
+/// Every dataset `sets` of every frame of DIR/frames.h5, read back (throws if any cannot be);
+/// returns the last frame's datasets by name and the number of frames.
 struct Frames {
   std::size_t count = 0;
   std::vector<double> times;  ///< each frame's simulated time, in order
   std::map<std::string, std::vector<double>> last;
 };
 
-Frames read_frames(const fs::path& dir) {
+Frames read_frames(const fs::path& dir, const std::vector<std::string>& sets = kPlaneSets) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const hid_t file = H5Fopen((dir / "frames.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) throw std::runtime_error("cannot open " + (dir / "frames.h5").string());
@@ -87,7 +93,7 @@ Frames read_frames(const fs::path& dir) {
     H5Aclose(attribute);
     frames.times.push_back(time);
     frames.last.clear();
-    for (const char* set : {"position", "velocity", "sxx", "syy", "szz", "sxy", "p", "q", "density"}) {
+    for (const std::string& set : sets) {
       const hid_t d = H5Dopen2(file, (std::string(name) + "/" + set).c_str(), H5P_DEFAULT);
       if (d < 0) throw std::runtime_error(std::string("cannot open ") + name + "/" + set);
       const hid_t space = H5Dget_space(d);
@@ -303,4 +309,105 @@ TEST_CASE("DIR/scene.toml reproduces the run", "[fault][record]") {
                     second / "log.txt")
               .exit_status == 0);
   CHECK(read_frames(second).last == read_frames(first).last);
+}
+
+namespace {
+
+/// The axisymmetric column (a quarter) at 1 cm, 869 particles, to `end_time` without stopping at
+/// rest (about 430 steps to 0.1 s), into `out`.
+std::vector<std::string> column_3d(const fs::path& out, const std::string& end_time,
+                                   std::vector<std::string> extra = {}) {
+  std::vector<std::string> args{SOILSPH_EXECUTABLE,
+                                "collapse",
+                                SOILSPH_SOURCE_DIR "/data/scenes/axisymmetric-column.toml",
+                                "--threads",
+                                "1",
+                                "--out",
+                                out.string(),
+                                "--set",
+                                "scene.particle_spacing=0.01",
+                                "--set",
+                                "scene.stop_at_rest=false",
+                                "--set",
+                                "scene.end_time=" + end_time};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+/// The last frames of two runs agree in every bit, and so do the figures of their summaries (all
+/// but the wall time and what follows from it, the command line and resumed_from). The resumed run
+/// has every frame of the straight one, and one more if it was stopped by a signal (at the stop).
+void check_same_run(const fs::path& resumed, const fs::path& straight, std::size_t stop_frames = 0) {
+  const Frames a = read_frames(resumed, kSpaceSets), b = read_frames(straight, kSpaceSets);
+  CHECK(std::includes(a.times.begin(), a.times.end(), b.times.begin(), b.times.end()));
+  CHECK(a.times.size() <= b.times.size() + stop_frames);
+  REQUIRE(a.last.size() == b.last.size());
+  for (const auto& [name, values] : b.last) {
+    INFO(name);
+    CHECK(a.last.at(name) == values);  // exact: every bit
+  }
+  const std::string sa = text_of(resumed / "summary.json"), sb = text_of(straight / "summary.json");
+  for (const char* key : {"steps", "end_time", "runout_radius_m", "runout_radius_spread_m", "height_m",
+                          "smallest_time_step", "largest_time_step", "guard_corrections"}) {
+    INFO(key);
+    CHECK(json_number(sa, key) == json_number(sb, key));
+  }
+  CHECK_THAT(sa, Contains("\"complete\": true") && Contains("\"stop_reason\": \"end time\""));
+}
+
+}  // namespace
+
+TEST_CASE("3D: a run stopped at its end time and resumed further ends bit for bit as one run",
+          "[fault][resume][3d]") {
+  const fs::path dir = fresh("resume-3d"), straight = fresh("resume-3d-straight");
+  REQUIRE(run_child(column_3d(straight, "0.1"), straight / "log.txt").exit_status == 0);
+  REQUIRE(run_child(column_3d(dir, "0.05"), dir / "log.txt").exit_status == 0);
+  auto args = resume(dir);
+  args.insert(args.end(), {"--set", "scene.end_time=0.1"});
+  const auto resumed = run_child(args, dir / "resume-log.txt");
+  INFO(resumed.log);
+  REQUIRE(resumed.exit_status == 0);
+  CHECK_THAT(resumed.log, Contains("resumed at t = 0.04"));  // the checkpoint before the end's short steps
+  CHECK_THAT(text_of(dir / "summary.json"), !Contains("\"resumed_from\": null"));
+  check_same_run(dir, straight);
+}
+
+TEST_CASE("3D: SIGTERM stops the run cleanly, and resumed it ends bit for bit as one that never stopped",
+          "[fault][resume][3d]") {
+  const fs::path dir = fresh("sigterm-3d"), straight = fresh("sigterm-3d-straight");
+  const std::vector<std::string> often{"--set", "output.checkpoint_interval=0.01"};
+  ChildOptions stop_early;
+  stop_early.signal_when_exists = dir / "checkpoint.h5";
+  stop_early.signal = SIGTERM;
+  const auto stopped = run_child(column_3d(dir, "0.3", often), dir / "log.txt", stop_early);
+  INFO(stopped.log);
+  REQUIRE(stopped.exit_status == 143);
+  CHECK_THAT(stopped.log, Contains("stopped by SIGTERM at t = ") && Contains("--resume " + dir.string()));
+  CHECK_THAT(text_of(dir / "summary.json"),
+             Contains("\"complete\": false") && Contains("\"stop_reason\": \"signal SIGTERM\""));
+  const auto resumed = run_child(resume(dir), dir / "resume-log.txt");
+  INFO(resumed.log);
+  REQUIRE(resumed.exit_status == 0);
+  REQUIRE(run_child(column_3d(straight, "0.3", often), straight / "log.txt").exit_status == 0);
+  check_same_run(dir, straight, 1);
+}
+
+TEST_CASE("3D: a 3D checkpoint whose scene says 2D is refused, naming both dimensions", "[fault][resume][3d]") {
+  const fs::path dir = fresh("resume-3d-dimension");
+  REQUIRE(run_child(column_3d(dir, "0.05"), dir / "log.txt").exit_status == 0);
+  {  // relabel the 3D checkpoint's scene as the 2D column's
+    const hid_t file = H5Fopen((dir / "checkpoint.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    REQUIRE(H5Adelete(file, "scene") >= 0);
+    const std::string scene = text_of(SOILSPH_SOURCE_DIR "/data/scenes/collapse-dp.toml");
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, scene.size());
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attribute = H5Acreate2(file, "scene", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    REQUIRE(H5Awrite(attribute, type, scene.c_str()) >= 0);
+    H5Aclose(attribute), H5Sclose(space), H5Tclose(type), H5Fclose(file);
+  }
+  const auto r = run_child(resume(dir), dir / "resume-log.txt");
+  CHECK(r.exit_status != 0);
+  CHECK_THAT(r.log, Contains("is the checkpoint of a 3D run, not of a 2D one"));
 }

@@ -2,6 +2,7 @@
 // reader's defaults, refusals, overrides and resolved scene; the axisymmetric column's lattice
 // against an independent count of the nodes in the quarter cylinder; the ghosts behind the walls;
 // the geostatic K0 stress against its closed form.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -403,6 +404,11 @@ TEST_CASE("a 3D checkpoint's ghosts get their walls' normals, friction and ids f
   CHECK(restored.wall_nx == built.wall_nx);
   CHECK(restored.wall_ny == built.wall_ny);
   CHECK(restored.wall_nz == built.wall_nz);
+  // The quarter column's ghosts where the symmetry planes meet each other or the floor lie behind two.
+  CHECK(std::any_of(built.corner_nx.begin(), built.corner_nx.end(), [](double n) { return n != 0.0; }));
+  CHECK(restored.corner_nx == built.corner_nx);
+  CHECK(restored.corner_ny == built.corner_ny);
+  CHECK(restored.corner_nz == built.corner_nz);
   CHECK(restored.wall_friction == built.wall_friction);
   CHECK(restored.wall_id == built.wall_id);
   ParticlesOf<3> fewer;
