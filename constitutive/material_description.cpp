@@ -66,7 +66,7 @@ Parameters parameters(const ModifiedCamClay& m) {
   out.emplace_back("compression_index", number(p.compression_index));
   out.emplace_back("swelling_index", number(p.swelling_index));
   out.emplace_back("initial_void_ratio", number(p.initial_void_ratio));
-  out.emplace_back("elasticity", quoted(constant ? "constant" : "pressure-dependent"));
+  out.emplace_back("elasticity", quoted(name_of(kElasticityKindTable, p.elasticity)));
   if (!constant) out.emplace_back("elastic_pressure_floor", number(p.elastic_pressure_floor));
   out.emplace_back("integrator", quoted(integrator_name(p.integrator)));
   out.emplace_back("substep_tolerance", number(p.substep_tolerance));
@@ -75,7 +75,7 @@ Parameters parameters(const ModifiedCamClay& m) {
   if (p.minimum_preconsolidation > 0.0)  // absent: none
     out.emplace_back("minimum_preconsolidation", number(p.minimum_preconsolidation));
   if (p.hardening_volume == HardeningVolume::Current)  // absent: "initial"
-    out.emplace_back("hardening_volume", quoted("current"));
+    out.emplace_back("hardening_volume", quoted(name_of(kHardeningVolumeTable, p.hardening_volume)));
   add_relaxation_time(out, p.viscoplastic_relaxation_time);
   return out;
 }
@@ -103,7 +103,7 @@ Parameters parameters(const UmatModel& m) {
   out.emplace_back("props", numbers(p.props));
   out.emplace_back("state_variables", std::to_string(p.state_variables));
   if (!p.initial_state.empty()) out.emplace_back("initial_state", numbers(p.initial_state));
-  out.emplace_back("stress_unit", quoted(kStressUnitNames[static_cast<int>(p.stress_unit)]));
+  out.emplace_back("stress_unit", quoted(name_of(kStressUnitTable, p.stress_unit)));
   out.emplace_back("thread_safe", p.thread_safe ? "true" : "false");
   return out;
 }

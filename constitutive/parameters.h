@@ -10,9 +10,10 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <type_traits>
 #include <vector>
 #include <toml++/toml.h>
+
+#include "constitutive/enum_names.h"
 
 namespace soilsph {
 
@@ -141,15 +142,10 @@ class FieldReader {
     if (table_.has(key)) field = table_.number(key, range, unit);
     else table_.accept({key});
   }
-  /// An optional key naming one of `values` by the name at the same place in `names`.
-  template <class Enum>
-  void choice_or(std::string_view key, Enum& field, std::span<const std::string_view> names,
-                 std::span<const std::type_identity_t<Enum>> values) const {
-    std::size_t k = 0;
-    while (k < values.size() && values[k] != field) ++k;
-    const std::string name = table_.choice_or(key, names[k], names);
-    for (k = 0; k < names.size(); ++k)
-      if (names[k] == name) field = values[k];
+  /// An optional key naming one of the values of `table`; the field's current value is the default.
+  template <class Enum, std::size_t N>
+  void choice_or(std::string_view key, Enum& field, const EnumTable<Enum, N>& table) const {
+    field = *parse_name(table, table_.choice_or(key, name_of(table, field), names_of(table)));
   }
 
  private:
@@ -169,9 +165,8 @@ class FieldChecker {
     if (field != std::numeric_limits<double>::infinity()) number(key, field, range, unit);
   }
   /// An enum value is always one of its names.
-  template <class Enum>
-  void choice_or(std::string_view, const Enum&, std::span<const std::string_view>,
-                 std::span<const std::type_identity_t<Enum>>) const {}
+  template <class Enum, std::size_t N>
+  void choice_or(std::string_view, const Enum&, const EnumTable<Enum, N>&) const {}
 
  private:
   std::string_view owner_;

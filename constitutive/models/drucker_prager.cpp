@@ -16,15 +16,11 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kApexSqrtJ2 = 1e-12;
 }  // namespace
 
-std::string_view plastic_potential_name(PlasticPotential potential) {
-  return potential == PlasticPotential::PaperEq20 ? "paper-eq20" : "matched";
-}
-
 template <class Io>
 void DruckerPragerParams::fields(const Io& io) {
   frictional_fields(io, *this);
-  io.choice_or("plastic_potential", plastic_potential, kPlasticPotentialNames, kPlasticPotentials);
-  io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
+  io.choice_or("plastic_potential", plastic_potential, kPlasticPotentialTable);
+  io.choice_or("integrator", integrator, kIntegratorTable);
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
 }
 

@@ -11,12 +11,6 @@
 
 namespace soilsph {
 
-namespace {
-constexpr Elasticity::Kind kElasticityKinds[] = {Elasticity::Kind::Constant,
-                                                 Elasticity::Kind::PressureDependent};
-constexpr std::string_view kElasticityNames[] = {"constant", "pressure-dependent"};
-}  // namespace
-
 template <class Io>
 void ModifiedCamClayParams::fields(const Io& io) {
   io.number("density", density, Range::positive(), "kg/m^3");
@@ -27,13 +21,13 @@ void ModifiedCamClayParams::fields(const Io& io) {
   io.number("compression_index", compression_index, Range::positive());
   io.number("swelling_index", swelling_index, Range::open(0.0, compression_index));
   io.number("initial_void_ratio", initial_void_ratio, Range::positive());
-  io.choice_or("elasticity", elasticity, kElasticityNames, kElasticityKinds);
+  io.choice_or("elasticity", elasticity, kElasticityKindTable);
   if (elasticity == Elasticity::Kind::Constant) {
     io.number("young_modulus", young_modulus, limits::young_modulus_range(), "Pa");
   } else {
     io.number_or("elastic_pressure_floor", elastic_pressure_floor, limits::stress_range(), "Pa");
   }
-  io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
+  io.choice_or("integrator", integrator, kIntegratorTable);
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
   io.number_or("implicit_alpha", implicit_alpha, Range::closed(0.5, 1.0));
   // Below 1e-12 (as substep_tolerance) the error control cannot be met in double precision and
@@ -41,7 +35,7 @@ void ModifiedCamClayParams::fields(const Io& io) {
   io.number_or("implicit_tolerance", implicit_tolerance, Range::zero_or_closed(1e-12, 1e-2));
   io.number_or("minimum_preconsolidation", minimum_preconsolidation, Range::closed(0.0, limits::kMaxStress),
                "Pa");
-  io.choice_or("hardening_volume", hardening_volume, kHardeningVolumeNames, kHardeningVolumes);
+  io.choice_or("hardening_volume", hardening_volume, kHardeningVolumeTable);
   io.number_or("viscoplastic_relaxation_time", viscoplastic_relaxation_time, limits::relaxation_time_range(),
                "s");
 }

@@ -21,7 +21,7 @@ template <class Io>
 void MohrCoulombParams::fields(const Io& io) {
   frictional_fields(io, *this);
   io.number_if_given("tension_cutoff", tension_cutoff, Range::closed(0.0, limits::kMaxStress), "Pa");
-  io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
+  io.choice_or("integrator", integrator, kIntegratorTable);
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
 }
 
