@@ -46,7 +46,8 @@ struct DruckerPragerParams : FrictionalParams {
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
 
   static DruckerPragerParams read(const TableReader& table);
-  /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
+  /// Every key with its range and default, read, checked, described or listed by `io`
+  /// (FieldReader, FieldChecker, FieldDescriber, KeyLister), in the order results list them.
   template <class Io>
   void fields(const Io& io);
 };

@@ -73,7 +73,8 @@ struct ModifiedCamClayParams {
   double viscoplastic_relaxation_time = 0.0;
 
   static ModifiedCamClayParams read(const TableReader& table);
-  /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
+  /// Every key with its range and default, read, checked, described or listed by `io`
+  /// (FieldReader, FieldChecker, FieldDescriber, KeyLister), in the order results list them.
   template <class Io>
   void fields(const Io& io);
 };

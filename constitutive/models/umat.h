@@ -80,6 +80,9 @@ struct UmatParams {
   UmatTangent tangent = UmatTangent::Ddsdde;
 
   static UmatParams read(const TableReader& table);
+  /// The keys read() reads, in the order results list them.
+  static constexpr std::string_view kKeys[] = {"density", "library", "symbol", "name", "props",
+                                               "state_variables", "initial_state", "stress_unit", "thread_safe"};
 };
 
 class UmatLibrary;
