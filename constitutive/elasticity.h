@@ -6,6 +6,7 @@
 ///    swelling line ε_v^e = κ/(1+e0) · ln(p/p_i)). As p → 0 the stiffness would vanish, so K uses
 ///    max(p, p_floor): below the floor the response is linear with K(p_floor). The floor is the
 ///    material key `elastic_pressure_floor` (Pa).
+#include "constitutive/enum_names.h"
 #include "constitutive/tensor.h"
 
 namespace soilsph {
@@ -77,5 +78,11 @@ class Elasticity {
   double kappa_star_ = 0.0;  ///< κ / (1+e0)
   double p_floor_ = 0.0;
 };
+
+/// The input names of the kinds (Modified Cam-Clay's `elasticity` key).
+inline constexpr auto kElasticityKindTable = enum_table<Elasticity::Kind>({
+    {Elasticity::Kind::Constant, "constant"},
+    {Elasticity::Kind::PressureDependent, "pressure-dependent"},
+});
 
 }  // namespace soilsph

@@ -20,10 +20,34 @@ UmatModel read_umat(const TableReader& table) {
 }
 }  // namespace
 
+namespace {
+template <class Params>
+std::vector<std::string_view> keys_of() {
+  if constexpr (requires { Params::kKeys; })
+    return {std::begin(Params::kKeys), std::end(Params::kKeys)};
+  else
+    return field_keys<Params>();
+}
+
+template <class... Model>
+std::vector<std::string_view> keys_of_models(const std::variant<Model...>*) {
+  std::vector<std::string_view> keys{"model"};
+  for (const std::vector<std::string_view>& model_keys : {keys_of<typename Model::Params>()...})
+    for (const std::string_view key : model_keys)
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  return keys;
+}
+}  // namespace
+
+std::span<const std::string_view> material_keys() {
+  static const std::vector<std::string_view> keys = keys_of_models(static_cast<const Material*>(nullptr));
+  return keys;
+}
+
 Material read_material(const TableReader& table) {
   const std::string model =
-      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName, MohrCoulomb::kName,
-                             UmatModel::kName});
+      table.choice("model", {LinearElastic::kName, DruckerPrager::kName, ModifiedCamClay::kName,
+                             MohrCoulomb::kName, UmatModel::kName});
   const Material material = [&]() -> Material {
     try {
       if (model == DruckerPrager::kName) return DruckerPrager(DruckerPrager::Params::read(table));
@@ -36,11 +60,11 @@ Material read_material(const TableReader& table) {
     }
   }();
   // Keys of other models are allowed (one scene can switch models with --set) but said to be unused.
-  const auto& known = kMaterialKeys;
+  const std::span<const std::string_view> known = material_keys();
   for (const std::string& key : table.unread_keys()) {
-    if (std::find(std::begin(known), std::end(known), key) == std::end(known)) table.fail(key, "is not a known key");
-    std::cerr << "note: " << table.source() << ": [" << table.table_name() << "] " << key << " is not used by "
-              << model << '\n';
+    if (std::find(known.begin(), known.end(), key) == known.end()) table.fail(key, "is not a known key");
+    std::cerr << "note: " << table.source() << ": [" << table.table_name() << "] " << key
+              << " is not used by " << model << '\n';
   }
   return material;
 }
@@ -76,10 +100,13 @@ double density(const Material& material) {
   return std::visit([](const auto& model) { return model.params().density; }, material);
 }
 
-bool has_rate_form(const Material& material) { return !std::holds_alternative<UmatModel>(material); }
+bool has_rate_form(const Material& material) {
+  return !std::holds_alternative<UmatModel>(material);
+}
 
 bool has_preconsolidation(const Material& material) {
-  return std::visit([](const auto& model) { return std::decay_t<decltype(model)>::kHasPreconsolidation; }, material);
+  return std::visit([](const auto& model) { return std::decay_t<decltype(model)>::kHasPreconsolidation; },
+                    material);
 }
 
 namespace {

@@ -4,6 +4,7 @@
 /// Callers choose the model once (std::visit) and run code instantiated for it, so the per-particle
 /// update is a direct, inlinable call.
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -21,14 +22,10 @@ using Material = std::variant<LinearElastic, DruckerPrager, ModifiedCamClay, Moh
 static_assert(ConstitutiveModel<LinearElastic> && ConstitutiveModel<UmatModel>);
 static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay> && PlasticModel<MohrCoulomb>);
 
-/// Every key a `[material]` table may hold, whichever model it selects.
-inline constexpr std::string_view kMaterialKeys[] = {
-    "model", "density", "young_modulus", "poisson_ratio", "friction_angle", "cohesion", "dilatancy_angle",
-    "compression_index", "swelling_index", "initial_void_ratio", "elasticity", "elastic_pressure_floor",
-    "integrator", "substep_tolerance", "implicit_alpha", "implicit_tolerance", "plastic_potential",
-    "tension_cutoff", "dilatancy_cutoff", "minimum_preconsolidation", "viscoplastic_relaxation_time",
-    // model = "umat" (models/umat.h)
-    "library", "symbol", "name", "props", "state_variables", "initial_state", "stress_unit", "thread_safe"};
+/// Every key a `[material]` table may hold, whichever model it selects: `model`, then the keys of each
+/// model's Params (its fields() list; a UMAT's UmatParams::kKeys) not listed before, in the order of
+/// the models in Material.
+std::span<const std::string_view> material_keys();
 
 /// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
 /// other models are reported on stderr as ignored; keys no model knows are errors.

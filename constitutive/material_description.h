@@ -10,12 +10,8 @@
 
 namespace soilsph {
 
-/// A text that reads back to exactly `x`: plain digits where they are short (100000, 0.3), else the
-/// shortest form (1e-12, 1.5e+20).
-std::string exact_number(double x);
-
-/// (key, value) for `model` and every key the model uses, in the order of kMaterialKeys; values as
-/// TOML reads them (strings quoted, numbers as exact_number()).
+/// (key, value) for `model` and every key the model uses, in the order of the model's Params::fields
+/// list; values as TOML reads them (strings quoted, numbers as exact_number()).
 std::vector<std::pair<std::string, std::string>> material_parameters(const Material& material);
 
 /// material_parameters() as one line: `key = value; key = value; ...`.

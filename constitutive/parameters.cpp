@@ -16,10 +16,29 @@ std::string format_number(double x) {
   if (e == std::string::npos) return text;
   // "1e+07" → "1e7", "1e-07" → "1e-7".
   std::size_t digits = e + 1;
-  if (text[digits] == '+') text.erase(digits, 1);
-  else if (text[digits] == '-') ++digits;
+  if (text[digits] == '+')
+    text.erase(digits, 1);
+  else if (text[digits] == '-')
+    ++digits;
   while (digits + 1 < text.size() && text[digits] == '0') text.erase(digits, 1);
   return text;
+}
+
+std::string exact_number(double x) {
+  // Plain digits where they are short (100000, not 1e+05), else the shortest form.
+  char buffer[400];
+  auto result = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::fixed);
+  if (result.ec == std::errc() && result.ptr - buffer <= 12) return std::string(buffer, result.ptr);
+  result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+void FieldDescriber::add(std::string_view key, std::string value, Listed listed) const {
+  if (listed == Listed::WhenSet && defaults_) {
+    for (const auto& [default_key, default_value] : *defaults_)
+      if (default_key == key && default_value == value) return;
+  }
+  out_.emplace_back(key, std::move(value));
 }
 
 namespace {
@@ -61,8 +80,8 @@ std::string TableReader::where(std::string_view key) const {
   // A value that --set put in the table carries that option as its source (apply_override), so the
   // message blames the option instead of a file that never held the value.
   std::string source = source_;
-  if (const toml::node* node = table_.get(key); node && node->source().path &&
-                                                 node->source().path->starts_with(kOverridePrefix))
+  if (const toml::node* node = table_.get(key);
+      node && node->source().path && node->source().path->starts_with(kOverridePrefix))
     source = *node->source().path;
   return source + ": [" + table_name_ + "] " + std::string(key);
 }
@@ -80,27 +99,32 @@ const toml::node* TableReader::find(std::string_view key) const {
   return table_.get(key);
 }
 
-bool TableReader::has(std::string_view key) const { return table_.get(key) != nullptr; }
+bool TableReader::has(std::string_view key) const {
+  return table_.get(key) != nullptr;
+}
 
 double TableReader::number(std::string_view key, Range range, std::string_view unit) const {
   const toml::node* node = find(key);
-  if (!node) fail(key, "is missing (allowed: " + range.describe() + (unit.empty() ? "" : " ") +
-                           std::string(unit) + ")");
+  if (!node)
+    fail(key,
+         "is missing (allowed: " + range.describe() + (unit.empty() ? "" : " ") + std::string(unit) + ")");
   const std::optional<double> value = node->value<double>();
   if (!value || node->is_boolean()) fail(key, "must be a number");
   if (!range.contains(*value)) {
     fail_value(key, format_number(*value),
-               "is out of range (allowed: " + range.describe() + (unit.empty() ? "" : " ") + std::string(unit) + ")");
+               "is out of range (allowed: " + range.describe() + (unit.empty() ? "" : " ") +
+                   std::string(unit) + ")");
   }
   record(key, *value);
   return *value;
 }
 
-void FieldChecker::number(std::string_view key, const double& field, Range range, std::string_view unit) const {
+void FieldChecker::number(std::string_view key, const double& field, Range range,
+                          std::string_view unit) const {
   if (range.contains(field)) return;
-  throw ParameterError(std::string(owner_) + " parameters: " + std::string(key) + " = " + format_number(field) +
-                       " is out of range (allowed: " + range.describe() + (unit.empty() ? "" : " ") +
-                       std::string(unit) + ")");
+  throw ParameterError(std::string(owner_) + " parameters: " + std::string(key) + " = " +
+                       format_number(field) + " is out of range (allowed: " + range.describe() +
+                       (unit.empty() ? "" : " ") + std::string(unit) + ")");
 }
 
 double TableReader::number_or(std::string_view key, double fallback, Range range,
@@ -121,8 +145,9 @@ long long TableReader::integer_or(std::string_view key, long long fallback, long
   const std::optional<long long> value = node->value_exact<long long>();
   if (!value) fail(key, "must be an integer");
   if (*value < lo || *value > hi) {
-    fail_value(key, std::to_string(*value),
-               "is out of range (allowed: " + std::to_string(lo) + " <= value <= " + std::to_string(hi) + ")");
+    fail_value(
+        key, std::to_string(*value),
+        "is out of range (allowed: " + std::to_string(lo) + " <= value <= " + std::to_string(hi) + ")");
   }
   record(key, *value);
   return *value;
@@ -177,7 +202,8 @@ std::vector<double> TableReader::numbers_or(std::string_view key, std::span<cons
       const std::string position = "element " + std::to_string(k + 1);
       if (!value || element.is_boolean()) fail(key, position + " must be a number");
       if (!range.contains(*value))
-        fail(key, position + " = " + format_number(*value) + " is out of range (allowed: " + range.describe() + ")");
+        fail(key, position + " = " + format_number(*value) +
+                      " is out of range (allowed: " + range.describe() + ")");
       values.push_back(*value);
     }
   }
@@ -191,9 +217,9 @@ std::string TableReader::word(std::string_view key) const {
   const toml::node* node = find(key);
   if (!node) fail(key, "is missing (a name of letters, digits, '_' and '-')");
   const std::optional<std::string> value = node->value_exact<std::string>();
-  const bool word = value && !value->empty() && std::all_of(value->begin(), value->end(), [](unsigned char c) {
-    return std::isalnum(c) || c == '_' || c == '-';
-  });
+  const bool word = value && !value->empty() &&
+                    std::all_of(value->begin(), value->end(),
+                                [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
   if (!word) fail(key, "must be a name of letters, digits, '_' and '-' (it labels output rows)");
   record(key, *value);
   return *value;
@@ -259,8 +285,8 @@ toml::table parse_toml_file(const std::string& path) {
     return toml::parse_file(path);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    throw ParameterError(path + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-                         ": " + std::string(e.description()));
+    throw ParameterError(path + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
+                         std::string(e.description()));
   }
 }
 
@@ -303,12 +329,14 @@ void apply_override(toml::table& root, std::string_view assignment) {
       if (!node) node = &table.insert_or_assign(name, toml::table{}).first->second;
       where += (where.empty() ? "" : ".") + name;
     }
-    if (!node->is_table() && !node->is_array()) throw ParameterError(option + ": [" + where + "] is not a table");
+    if (!node->is_table() && !node->is_array())
+      throw ParameterError(option + ": [" + where + "] is not a table");
   }
   toml::table* table = node->as_table();
   if (!table)
-    throw ParameterError(option + ": [[" + where + "]] is an array of tables; name an entry by its number from 1 (" +
-                         where + ".1." + key + "=...)");
+    throw ParameterError(option + ": [[" + where +
+                         "]] is an array of tables; name an entry by its number from 1 (" + where + ".1." +
+                         key + "=...)");
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + text, std::string(kOverridePrefix) + std::string(assignment));

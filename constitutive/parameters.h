@@ -3,6 +3,7 @@
 /// Validated reading of one TOML table. Every value is range-checked where it is read, every key
 /// that the table holds must be consumed (or declared known), and every error names the file, the
 /// key and the allowed range, so that a bad input never crashes or falls back silently.
+#include <toml++/toml.h>
 #include <initializer_list>
 #include <limits>
 #include <set>
@@ -10,9 +11,10 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <type_traits>
+#include <utility>
 #include <vector>
-#include <toml++/toml.h>
+
+#include "constitutive/enum_names.h"
 
 namespace soilsph {
 
@@ -25,6 +27,9 @@ class ParameterError : public std::runtime_error {
 /// A number for messages: six significant digits as `<<` writes them, but 1e12 and 1e-7 rather
 /// than 1e+12 and 1e-07.
 std::string format_number(double x);
+/// A text that reads back to exactly `x`: plain digits where they are short (100000, 0.3), else the
+/// shortest form (1e-12, 1.5e+20).
+std::string exact_number(double x);
 
 /// An interval of admissible values; each end open or closed, or unbounded.
 struct Range {
@@ -34,9 +39,9 @@ struct Range {
   bool upper_open = true;
   bool or_zero = false;  ///< 0 is allowed too ("off"), below the interval
 
-  static Range positive() { return {0.0, kInf, true, true}; }                 ///< (0, ∞)
-  static Range non_negative() { return {0.0, kInf, false, true}; }            ///< [0, ∞)
-  static Range open(double lo, double hi) { return {lo, hi, true, true}; }    ///< (lo, hi)
+  static Range positive() { return {0.0, kInf, true, true}; }                   ///< (0, ∞)
+  static Range non_negative() { return {0.0, kInf, false, true}; }              ///< [0, ∞)
+  static Range open(double lo, double hi) { return {lo, hi, true, true}; }      ///< (lo, hi)
   static Range closed(double lo, double hi) { return {lo, hi, false, false}; }  ///< [lo, hi]
   static Range closed_open(double lo, double hi) { return {lo, hi, false, true}; }
   static Range open_closed(double lo, double hi) { return {lo, hi, true, false}; }  ///< (lo, hi]
@@ -120,36 +125,64 @@ class TableReader {
   mutable toml::table resolved_;
 };
 
+/// Whether a result lists an optional key always or only when it is set off its default: an option
+/// that is off unless asked for (a cut-off, a relaxation time) is absent from the record of a
+/// material that does not use it.
+enum class Listed { Always, WhenSet };
+
 /// A model's parameters are listed once, in `Params::fields(io)`: each field with its key, its
-/// allowed range and (for optional keys) its default, the field's initial value in the struct. Two
-/// visitors walk that list: FieldReader fills the fields from a TOML table (Params::read), and
-/// FieldChecker checks a struct built in code against the same ranges (the model's constructor), so
-/// both paths share one set of keys, ranges and defaults.
+/// allowed range and (for optional keys) its default, the field's initial value in the struct, in the
+/// order results list them. Four visitors walk that list: FieldReader fills the fields from a TOML
+/// table (Params::read), FieldChecker checks a struct built in code against the same ranges (the
+/// model's constructor), FieldDescriber writes each field as the TOML that reads it back (the record
+/// of a result), and KeyLister collects the keys (what a `[material]` table may hold). So reader,
+/// checker and describer share one set of keys, ranges and defaults.
+///
+/// `io.when(applies)` marks keys that apply only under a condition on other fields (one kind of
+/// elasticity's): the reader, checker and describer skip them when it is false; the lister lists them.
+template <class Io>
+class OnlyWhen {
+ public:
+  OnlyWhen(const Io& io, bool applies) : io_(io), applies_(applies) {}
+  template <class... Args>
+  void number(Args&&... args) const {
+    if (applies_) io_.number(std::forward<Args>(args)...);
+  }
+  template <class... Args>
+  void number_or(Args&&... args) const {
+    if (applies_) io_.number_or(std::forward<Args>(args)...);
+  }
+
+ private:
+  const Io& io_;
+  bool applies_;
+};
+
 class FieldReader {
  public:
   explicit FieldReader(const TableReader& table) : table_(table) {}
+  OnlyWhen<FieldReader> when(bool applies) const { return {*this, applies}; }
   /// A required key.
   void number(std::string_view key, double& field, Range range, std::string_view unit = "") const {
     field = table_.number(key, range, unit);
   }
   /// An optional key whose default is the field's current (initial) value.
-  void number_or(std::string_view key, double& field, Range range, std::string_view unit = "") const {
+  void number_or(std::string_view key, double& field, Range range, std::string_view unit = "",
+                 Listed = Listed::Always) const {
     field = table_.number_or(key, field, range, unit);
   }
-  /// An optional key without a default value: absent, the field keeps +∞ ("none").
+  /// An optional key without a default value: absent, the field keeps +∞ ("none"); listed when given.
   void number_if_given(std::string_view key, double& field, Range range, std::string_view unit = "") const {
-    if (table_.has(key)) field = table_.number(key, range, unit);
-    else table_.accept({key});
+    if (table_.has(key))
+      field = table_.number(key, range, unit);
+    else
+      table_.accept({key});
   }
-  /// An optional key naming one of `values` by the name at the same place in `names`.
-  template <class Enum>
-  void choice_or(std::string_view key, Enum& field, std::span<const std::string_view> names,
-                 std::span<const std::type_identity_t<Enum>> values) const {
-    std::size_t k = 0;
-    while (k < values.size() && values[k] != field) ++k;
-    const std::string name = table_.choice_or(key, names[k], names);
-    for (k = 0; k < names.size(); ++k)
-      if (names[k] == name) field = values[k];
+  /// An optional key naming one of the values of `table`; the field's current value is the default.
+  template <class Enum, std::size_t N>
+  void choice_or(std::string_view key, Enum& field, const EnumTable<Enum, N>& table,
+                 Listed = Listed::Always) const {
+    field = *parse_name(table, table_.choice_or(key, name_of(table, field), names_of(table)));
   }
 
  private:
@@ -161,27 +194,88 @@ class FieldReader {
 class FieldChecker {
  public:
   explicit FieldChecker(std::string_view owner) : owner_(owner) {}
+  OnlyWhen<FieldChecker> when(bool applies) const { return {*this, applies}; }
   void number(std::string_view key, const double& field, Range range, std::string_view unit = "") const;
-  void number_or(std::string_view key, const double& field, Range range, std::string_view unit = "") const {
+  void number_or(std::string_view key, const double& field, Range range, std::string_view unit = "",
+                 Listed = Listed::Always) const {
     number(key, field, range, unit);
   }
-  void number_if_given(std::string_view key, const double& field, Range range, std::string_view unit = "") const {
+  void number_if_given(std::string_view key, const double& field, Range range,
+                       std::string_view unit = "") const {
     if (field != std::numeric_limits<double>::infinity()) number(key, field, range, unit);
   }
   /// An enum value is always one of its names.
-  template <class Enum>
-  void choice_or(std::string_view, const Enum&, std::span<const std::string_view>,
-                 std::span<const std::type_identity_t<Enum>>) const {}
+  template <class Enum, std::size_t N>
+  void choice_or(std::string_view, const Enum&, const EnumTable<Enum, N>&, Listed = Listed::Always) const {}
 
  private:
   std::string_view owner_;
 };
 
+/// (key, value) pairs: a material as the TOML text that reads it back.
+using KeyValues = std::vector<std::pair<std::string, std::string>>;
+
+/// Appends each field to a list of (key, value) as TOML reads it back: numbers as exact_number(),
+/// names quoted. A Listed::WhenSet key is left out at the value it has
+/// in `defaults` (the list of a default-constructed struct; nullptr: every key is listed).
+class FieldDescriber {
+ public:
+  FieldDescriber(KeyValues& out, const KeyValues* defaults) : out_(out), defaults_(defaults) {}
+  OnlyWhen<FieldDescriber> when(bool applies) const { return {*this, applies}; }
+  void number(std::string_view key, const double& field, Range, std::string_view = "") const {
+    add(key, exact_number(field), Listed::Always);
+  }
+  void number_or(std::string_view key, const double& field, Range, std::string_view = "",
+                 Listed listed = Listed::Always) const {
+    add(key, exact_number(field), listed);
+  }
+  void number_if_given(std::string_view key, const double& field, Range, std::string_view = "") const {
+    if (field != std::numeric_limits<double>::infinity()) add(key, exact_number(field), Listed::Always);
+  }
+  template <class Enum, std::size_t N>
+  void choice_or(std::string_view key, const Enum& field, const EnumTable<Enum, N>& table,
+                 Listed listed = Listed::Always) const {
+    add(key, quoted(name_of(table, field)), listed);
+  }
+
+ private:
+  static std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
+  void add(std::string_view key, std::string value, Listed listed) const;
+
+  KeyValues& out_;
+  const KeyValues* defaults_;
+};
+
+/// Collects the keys of a fields() list, those under a condition included.
+class KeyLister {
+ public:
+  explicit KeyLister(std::vector<std::string_view>& keys) : keys_(keys) {}
+  const KeyLister& when(bool) const { return *this; }
+  template <class Field, class... Rest>
+  void number(std::string_view key, const Field&, const Rest&...) const {
+    keys_.push_back(key);
+  }
+  template <class Field, class... Rest>
+  void number_or(std::string_view key, const Field&, const Rest&...) const {
+    keys_.push_back(key);
+  }
+  template <class Field, class... Rest>
+  void number_if_given(std::string_view key, const Field&, const Rest&...) const {
+    keys_.push_back(key);
+  }
+  template <class Field, class... Rest>
+  void choice_or(std::string_view key, const Field&, const Rest&...) const {
+    keys_.push_back(key);
+  }
+
+ private:
+  std::vector<std::string_view>& keys_;
+};
+
 /// A Params struct read from `table` through its fields() list (the struct's initial values are the
-/// defaults of optional keys).
+/// defaults of optional keys), starting from `params`.
 template <class Params>
-Params read_fields(const TableReader& table) {
-  Params params;
+Params read_fields(const TableReader& table, Params params = {}) {
   params.fields(FieldReader(table));
   return params;
 }
@@ -193,6 +287,24 @@ const Params& validated(const Params& params, std::string_view owner) {
   Params copy = params;
   copy.fields(FieldChecker(owner));
   return params;
+}
+
+/// `params` as (key, value) pairs in the order of its fields() list, as TOML that reads it back.
+template <class Params>
+KeyValues described_fields(const Params& params) {
+  KeyValues defaults, out;
+  Params{}.fields(FieldDescriber(defaults, nullptr));
+  Params copy = params;
+  copy.fields(FieldDescriber(out, &defaults));
+  return out;
+}
+
+/// The keys of a Params struct's fields() list, in its order.
+template <class Params>
+std::vector<std::string_view> field_keys() {
+  std::vector<std::string_view> keys;
+  Params{}.fields(KeyLister(keys));
+  return keys;
 }
 
 /// Parses a TOML file, turning syntax errors into ParameterError with file, line and column.

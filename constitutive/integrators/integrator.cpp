@@ -5,8 +5,7 @@
 namespace soilsph {
 
 Integrator parse_integrator(std::string_view name) {
-  for (Integrator scheme : kIntegrators)
-    if (integrator_name(scheme) == name) return scheme;
+  if (const std::optional<Integrator> scheme = parse_name(kIntegratorTable, name)) return *scheme;
   throw std::invalid_argument("unknown integrator \"" + std::string(name) + "\"");
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "constitutive/enum_names.h"
 #include "constitutive/parameters.h"
 
 namespace soilsph {
@@ -14,21 +15,24 @@ namespace soilsph {
 enum class Integrator {
   Explicit,  ///< the paper's explicit rate form (eq 16, 21–22, 28–29) with stress correction (eq 30–35)
   Substep,   ///< modified-Euler substepping with local error control (Sloan, Abbo & Sheng 2001)
-  Implicit,  ///< return mapping with the consistent tangent: D-P closest-point projection, MCC generalised midpoint
+  Implicit,  ///< return mapping with the consistent tangent: D-P closest-point projection, MCC generalised
+             ///< midpoint
 };
 
-/// Every scheme, in the order of the enum: the one list that the parser, the stress test and the
-/// benchmarks iterate (a new scheme is added here and in the enum only).
-inline constexpr Integrator kIntegrators[] = {Integrator::Explicit, Integrator::Substep, Integrator::Implicit};
-/// Their input/CLI names, in the same order, for messages and validation.
-inline constexpr std::string_view kIntegratorNames[] = {"explicit", "substep", "implicit"};
-static_assert(std::size(kIntegrators) == std::size(kIntegratorNames));
+/// Every scheme with its input/CLI name, in the order of the enum: the one table that the parser, the
+/// messages, the stress test and the benchmarks read (a new scheme is added here and in the enum only).
+inline constexpr auto kIntegratorTable = enum_table<Integrator>({
+    {Integrator::Explicit, "explicit"},
+    {Integrator::Substep, "substep"},
+    {Integrator::Implicit, "implicit"},
+});
+/// The schemes and their names, in table order.
+inline constexpr auto kIntegrators = values_of(kIntegratorTable);
+inline constexpr auto kIntegratorNames = names_of(kIntegratorTable);
 
 /// The input/CLI name of a scheme, e.g. "explicit".
 constexpr std::string_view integrator_name(Integrator integrator) {
-  for (std::size_t k = 0; k < std::size(kIntegrators); ++k)
-    if (kIntegrators[k] == integrator) return kIntegratorNames[k];
-  return "unknown";
+  return name_of(kIntegratorTable, integrator);
 }
 /// The scheme for a name; throws std::invalid_argument for an unknown name.
 Integrator parse_integrator(std::string_view name);

@@ -16,19 +16,19 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kApexSqrtJ2 = 1e-12;
 }  // namespace
 
-std::string_view plastic_potential_name(PlasticPotential potential) {
-  return potential == PlasticPotential::PaperEq20 ? "paper-eq20" : "matched";
-}
-
 template <class Io>
 void DruckerPragerParams::fields(const Io& io) {
   frictional_fields(io, *this);
-  io.choice_or("plastic_potential", plastic_potential, kPlasticPotentialNames, kPlasticPotentials);
-  io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
+  io.choice_or("plastic_potential", plastic_potential, kPlasticPotentialTable);
+  io.choice_or("integrator", integrator, kIntegratorTable);
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
 }
+template void DruckerPragerParams::fields(const FieldDescriber&);
+template void DruckerPragerParams::fields(const KeyLister&);
 
-DruckerPragerParams DruckerPragerParams::read(const TableReader& t) { return read_fields<DruckerPragerParams>(t); }
+DruckerPragerParams DruckerPragerParams::read(const TableReader& t) {
+  return read_fields<DruckerPragerParams>(t);
+}
 
 DruckerPrager::DruckerPrager(const Params& params)
     : params_(validated(params, kName)),
@@ -48,10 +48,11 @@ DruckerPrager::DruckerPrager(const Params& params)
   require_constant_moduli(kName, params.young_modulus, elasticity_);
   require_derived(kName, "friction_angle", params.friction_angle,
                   "alpha_phi = tan(phi)/sqrt(9 + 12 tan^2(phi)) (eq 19)", alpha_phi_, "");
-  require_derived(kName, "cohesion", params.cohesion, "k_c = 3c/sqrt(9 + 12 tan^2(phi)) (eq 19)", k_c_, "Pa", true);
-  // The apex I1 = k_c/α_φ, where tension is cut off (eq 30–31); 3c/tan φ, so a small φ overflows it.
-  require_derived(kName, "cohesion", params.cohesion, "the apex's I1 = 3c/tan(phi)", apex_first_invariant(), "Pa",
+  require_derived(kName, "cohesion", params.cohesion, "k_c = 3c/sqrt(9 + 12 tan^2(phi)) (eq 19)", k_c_, "Pa",
                   true);
+  // The apex I1 = k_c/α_φ, where tension is cut off (eq 30–31); 3c/tan φ, so a small φ overflows it.
+  require_derived(kName, "cohesion", params.cohesion, "the apex's I1 = 3c/tan(phi)", apex_first_invariant(),
+                  "Pa", true);
   build_cutoff(params_);
 }
 
@@ -62,7 +63,8 @@ std::string DruckerPrager::describe_constants() const {
       << "  alpha_phi = " << alpha_phi_ << ", k_c = " << k_c_ << " Pa (eq 19, plane strain)\n"
       << "  alpha_psi = " << alpha_psi_ << " (the plastic potential's I1 coefficient, "
       << plastic_potential_name(params_.plastic_potential) << ")\n";
-  if (limits_dilation()) out << "  dilatancy cut-off: psi = 0 from a plastic volumetric strain of " << dilatancy_cutoff() << "\n";
+  if (limits_dilation())
+    out << "  dilatancy cut-off: psi = 0 from a plastic volumetric strain of " << dilatancy_cutoff() << "\n";
   return out.str();
 }
 
@@ -71,7 +73,8 @@ double DruckerPrager::yield(const Mat3& sigma, double) const {
 }
 
 double DruckerPrager::normalized_yield(const Mat3& sigma, double) const {
-  const double scale = std::sqrt(second_deviatoric_invariant(sigma)) + alpha_phi_ * std::abs(sigma.trace()) + k_c_;
+  const double scale =
+      std::sqrt(second_deviatoric_invariant(sigma)) + alpha_phi_ * std::abs(sigma.trace()) + k_c_;
   return yield(sigma) / std::max(scale, 1e-300);
 }
 
@@ -109,7 +112,8 @@ Mat3 DruckerPrager::correct(const Mat3& sigma, double) const {
   return room / sqrt_j2 * deviator(sigma) + I1 / 3.0 * Mat3::Identity();
 }
 
-State DruckerPrager::update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const {
+State DruckerPrager::update(const State& state, const Mat3& strain_increment,
+                            const Mat3& spin_increment) const {
   return integrate(*this, state, strain_increment, spin_increment);
 }
 

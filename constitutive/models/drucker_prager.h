@@ -27,9 +27,13 @@ enum class PlasticPotential {
   Matched,    ///< α_ψ = tanψ/√(9 + 12 tan²ψ): like α_φ of eq 19; ψ = φ is associated flow
   PaperEq20,  ///< α_ψ = 3 sinψ: eq 20 as printed, to reproduce the paper
 };
-inline constexpr PlasticPotential kPlasticPotentials[] = {PlasticPotential::Matched, PlasticPotential::PaperEq20};
-inline constexpr std::string_view kPlasticPotentialNames[] = {"matched", "paper-eq20"};
-std::string_view plastic_potential_name(PlasticPotential potential);
+inline constexpr auto kPlasticPotentialTable = enum_table<PlasticPotential>({
+    {PlasticPotential::Matched, "matched"},
+    {PlasticPotential::PaperEq20, "paper-eq20"},
+});
+constexpr std::string_view plastic_potential_name(PlasticPotential potential) {
+  return name_of(kPlasticPotentialTable, potential);
+}
 
 /// The parameters, with the defaults of an input file: a struct built in code runs as the same TOML
 /// with the required keys given (the model's constructor checks every range).
@@ -42,7 +46,8 @@ struct DruckerPragerParams : FrictionalParams {
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
 
   static DruckerPragerParams read(const TableReader& table);
-  /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
+  /// Every key with its range and default, read, checked, described or listed by `io`
+  /// (FieldReader, FieldChecker, FieldDescriber, KeyLister), in the order results list them.
   template <class Io>
   void fields(const Io& io);
 };

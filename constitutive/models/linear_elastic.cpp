@@ -14,9 +14,12 @@ void LinearElasticParams::fields(const Io& io) {
   io.number("poisson_ratio", poisson_ratio, Range::open(-1.0, 0.5));
 }
 template void LinearElasticParams::fields(const FieldChecker&);
+template void LinearElasticParams::fields(const FieldDescriber&);
+template void LinearElasticParams::fields(const KeyLister&);
 
 LinearElastic::LinearElastic(const Params& params)
-    : params_(validated(params, kName)), elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)) {
+    : params_(validated(params, kName)),
+      elasticity_(Elasticity::constant(params.young_modulus, params.poisson_ratio)) {
   require_constant_moduli(kName, params.young_modulus, elasticity_);
 }
 
@@ -27,6 +30,8 @@ std::string LinearElastic::describe_constants() const {
   return out.str();
 }
 
-LinearElasticParams LinearElasticParams::read(const TableReader& t) { return read_fields<LinearElasticParams>(t); }
+LinearElasticParams LinearElasticParams::read(const TableReader& t) {
+  return read_fields<LinearElasticParams>(t);
+}
 
 }  // namespace soilsph

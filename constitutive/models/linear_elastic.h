@@ -17,7 +17,8 @@ struct LinearElasticParams {
   double poisson_ratio = 0.0;  ///< − (required)
 
   static LinearElasticParams read(const TableReader& table);
-  /// Every key with its range, read or checked by `io` (FieldReader, FieldChecker).
+  /// Every key with its range, read, checked, described or listed by `io`
+  /// (FieldReader, FieldChecker, FieldDescriber, KeyLister), in the order results list them.
   template <class Io>
   void fields(const Io& io);
 };

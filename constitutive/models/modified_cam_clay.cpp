@@ -11,15 +11,11 @@
 
 namespace soilsph {
 
-namespace {
-constexpr Elasticity::Kind kElasticityKinds[] = {Elasticity::Kind::Constant,
-                                                 Elasticity::Kind::PressureDependent};
-constexpr std::string_view kElasticityNames[] = {"constant", "pressure-dependent"};
-}  // namespace
-
 template <class Io>
 void ModifiedCamClayParams::fields(const Io& io) {
   io.number("density", density, Range::positive(), "kg/m^3");
+  io.when(elasticity == Elasticity::Kind::Constant)
+      .number("young_modulus", young_modulus, limits::young_modulus_range(), "Pa");
   io.number("poisson_ratio", poisson_ratio, Range::open(-1.0, 0.5));
   // From 1 degree: below it M < 0.035 and the ellipse degenerates into the p axis (at 1e-299
   // degrees M^2 underflows and returns end above p_c); no soil's critical state is that smooth.
@@ -27,27 +23,33 @@ void ModifiedCamClayParams::fields(const Io& io) {
   io.number("compression_index", compression_index, Range::positive());
   io.number("swelling_index", swelling_index, Range::open(0.0, compression_index));
   io.number("initial_void_ratio", initial_void_ratio, Range::positive());
-  io.choice_or("elasticity", elasticity, kElasticityNames, kElasticityKinds);
-  if (elasticity == Elasticity::Kind::Constant) {
-    io.number("young_modulus", young_modulus, limits::young_modulus_range(), "Pa");
-  } else {
-    io.number_or("elastic_pressure_floor", elastic_pressure_floor, limits::stress_range(), "Pa");
-  }
-  io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
+  io.choice_or("elasticity", elasticity, kElasticityKindTable);
+  io.when(elasticity == Elasticity::Kind::PressureDependent)
+      .number_or("elastic_pressure_floor", elastic_pressure_floor, limits::stress_range(), "Pa");
+  io.choice_or("integrator", integrator, kIntegratorTable);
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
   io.number_or("implicit_alpha", implicit_alpha, Range::closed(0.5, 1.0));
   // Below 1e-12 (as substep_tolerance) the error control cannot be met in double precision and
   // splits every plastic update into its 10 000 sub-increments (an input-fuzzer finding: 1e-30).
   io.number_or("implicit_tolerance", implicit_tolerance, Range::zero_or_closed(1e-12, 1e-2));
   io.number_or("minimum_preconsolidation", minimum_preconsolidation, Range::closed(0.0, limits::kMaxStress),
-               "Pa");
-  io.choice_or("hardening_volume", hardening_volume, kHardeningVolumeNames, kHardeningVolumes);
+               "Pa", Listed::WhenSet);
+  io.choice_or("hardening_volume", hardening_volume, kHardeningVolumeTable, Listed::WhenSet);
   io.number_or("viscoplastic_relaxation_time", viscoplastic_relaxation_time, limits::relaxation_time_range(),
-               "s");
+               "s", Listed::WhenSet);
 }
+template void ModifiedCamClayParams::fields(const FieldDescriber&);
+template void ModifiedCamClayParams::fields(const KeyLister&);
 
 ModifiedCamClayParams ModifiedCamClayParams::read(const TableReader& t) {
-  return read_fields<ModifiedCamClayParams>(t);
+  // `elasticity` decides whether young_modulus applies, which comes before it in the list: it is taken
+  // first, and a bad value is reported at its place in the list.
+  ModifiedCamClayParams params;
+  try {
+    FieldReader(t).choice_or("elasticity", params.elasticity, kElasticityKindTable);
+  } catch (const ParameterError&) {
+  }
+  return read_fields(t, params);
 }
 
 namespace {

@@ -31,8 +31,10 @@ enum class HardeningVolume {
   /// reference (at each instant) and the SPH solver (through the model's update) follow it.
   Current,
 };
-inline constexpr HardeningVolume kHardeningVolumes[] = {HardeningVolume::Initial, HardeningVolume::Current};
-inline constexpr std::string_view kHardeningVolumeNames[] = {"initial", "current"};
+inline constexpr auto kHardeningVolumeTable = enum_table<HardeningVolume>({
+    {HardeningVolume::Initial, "initial"},
+    {HardeningVolume::Current, "current"},
+});
 
 /// The parameters, with the defaults of an input file: a struct built in code runs as the same TOML
 /// with the required keys given (the model's constructor checks every range).
@@ -71,7 +73,8 @@ struct ModifiedCamClayParams {
   double viscoplastic_relaxation_time = 0.0;
 
   static ModifiedCamClayParams read(const TableReader& table);
-  /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
+  /// Every key with its range and default, read, checked, described or listed by `io`
+  /// (FieldReader, FieldChecker, FieldDescriber, KeyLister), in the order results list them.
   template <class Io>
   void fields(const Io& io);
 };

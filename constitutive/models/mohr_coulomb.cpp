@@ -20,12 +20,16 @@ constexpr double kEqualPrincipal = 1e-12;
 template <class Io>
 void MohrCoulombParams::fields(const Io& io) {
   frictional_fields(io, *this);
-  io.number_if_given("tension_cutoff", tension_cutoff, Range::closed(0.0, limits::kMaxStress), "Pa");
-  io.choice_or("integrator", integrator, kIntegratorNames, kIntegrators);
+  io.choice_or("integrator", integrator, kIntegratorTable);
   io.number_or("substep_tolerance", substep_tolerance, kSubstepToleranceRange);
+  io.number_if_given("tension_cutoff", tension_cutoff, Range::closed(0.0, limits::kMaxStress), "Pa");
 }
+template void MohrCoulombParams::fields(const FieldDescriber&);
+template void MohrCoulombParams::fields(const KeyLister&);
 
-MohrCoulombParams MohrCoulombParams::read(const TableReader& t) { return read_fields<MohrCoulombParams>(t); }
+MohrCoulombParams MohrCoulombParams::read(const TableReader& t) {
+  return read_fields<MohrCoulombParams>(t);
+}
 
 Principal principal(const Mat3& sigma) {
   const Eigen::SelfAdjointEigenSolver<Mat3> solver(sigma);
@@ -45,8 +49,8 @@ MohrCoulomb::MohrCoulomb(const Params& params)
   require_constant_moduli(kName, params.young_modulus, elasticity_);
   require_derived(kName, "friction_angle", params.friction_angle, "sin(phi)", sin_phi_, "");
   // The apex c cot(phi), where the pyramid closes; a small φ overflows it.
-  require_derived(kName, "cohesion", params.cohesion, "the apex's principal stress c cot(phi)", apex_stress(), "Pa",
-                  true);
+  require_derived(kName, "cohesion", params.cohesion, "the apex's principal stress c cot(phi)", apex_stress(),
+                  "Pa", true);
   build_cutoff(params_);
 }
 
@@ -58,8 +62,10 @@ std::string MohrCoulomb::describe_constants() const {
       << " Pa\n"
       << "  apex = c cot(phi) = " << apex_stress() << " Pa (tension-positive)";
   if (has_tension_cutoff()) out << ", tension cut-off " << tension_cutoff() << " Pa";
-  if (limits_dilation()) out << "\n  dilatancy cut-off: psi = 0 from a plastic volumetric strain of " << dilatancy_cutoff();
-  out << "\n  triaxial peak q: compression 2(c cos(phi) + s_r sin(phi))/(1 - sin(phi)), extension /(1 + sin(phi))\n";
+  if (limits_dilation())
+    out << "\n  dilatancy cut-off: psi = 0 from a plastic volumetric strain of " << dilatancy_cutoff();
+  out << "\n  triaxial peak q: compression 2(c cos(phi) + s_r sin(phi))/(1 - sin(phi)), extension /(1 + "
+         "sin(phi))\n";
   return out.str();
 }
 
@@ -95,15 +101,22 @@ Mat3 MohrCoulomb::plane_gradient(const Mat3& sigma, double sin_angle) const {
   Vec3 a(1.0 + sin_angle, 0.0, -(1.0 - sin_angle));
   const double tolerance = kEqualPrincipal * std::max(s.cwiseAbs().maxCoeff(), 1e-300);
   const bool right = s(0) - s(1) <= tolerance, left = s(1) - s(2) <= tolerance;
-  if (right && left) a.setConstant(a.sum() / 3.0);
-  else if (right) a(0) = a(1) = 0.5 * (a(0) + a(1));
-  else if (left) a(1) = a(2) = 0.5 * (a(1) + a(2));
+  if (right && left)
+    a.setConstant(a.sum() / 3.0);
+  else if (right)
+    a(0) = a(1) = 0.5 * (a(0) + a(1));
+  else if (left)
+    a(1) = a(2) = 0.5 * (a(1) + a(2));
   return p.compose(a);
 }
 
-Mat3 MohrCoulomb::yield_gradient(const Mat3& sigma, double) const { return plane_gradient(sigma, sin_phi_); }
+Mat3 MohrCoulomb::yield_gradient(const Mat3& sigma, double) const {
+  return plane_gradient(sigma, sin_phi_);
+}
 
-Mat3 MohrCoulomb::flow_direction(const Mat3& sigma, double) const { return plane_gradient(sigma, sin_psi_); }
+Mat3 MohrCoulomb::flow_direction(const Mat3& sigma, double) const {
+  return plane_gradient(sigma, sin_psi_);
+}
 
 std::array<YieldPlane, MohrCoulomb::kMaxPlanes> MohrCoulomb::planes(const Mat3& sigma) const {
   const Principal p = principal(sigma);
@@ -136,11 +149,13 @@ Mat3 MohrCoulomb::correct(const Mat3& sigma, double) const {
 }
 
 bool MohrCoulomb::beyond_tension_cutoff(const Mat3& trial) const {
-  const MohrCoulombReturn::Kind kind = return_principal(*this, principal(trial).values, elasticity_.at(0.0)).kind;
+  const MohrCoulombReturn::Kind kind =
+      return_principal(*this, principal(trial).values, elasticity_.at(0.0)).kind;
   return kind == MohrCoulombReturn::Kind::Apex || kind == MohrCoulombReturn::Kind::Cutoff;
 }
 
-State MohrCoulomb::update(const State& state, const Mat3& strain_increment, const Mat3& spin_increment) const {
+State MohrCoulomb::update(const State& state, const Mat3& strain_increment,
+                          const Mat3& spin_increment) const {
   return integrate(*this, state, strain_increment, spin_increment);
 }
 

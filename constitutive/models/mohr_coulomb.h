@@ -36,7 +36,8 @@ struct MohrCoulombParams : FrictionalParams {
   double substep_tolerance = kDefaultSubstepTolerance;  ///< `substep`: relative stress-error tolerance
 
   static MohrCoulombParams read(const TableReader& table);
-  /// Every key with its range and default, read or checked by `io` (FieldReader, FieldChecker).
+  /// Every key with its range and default, read, checked, described or listed by `io`
+  /// (FieldReader, FieldChecker, FieldDescriber, KeyLister), in the order results list them.
   template <class Io>
   void fields(const Io& io);
 };

@@ -59,7 +59,7 @@ void frictional_fields(const Io& io, FrictionalParams& p) {
   io.number_or("dilatancy_angle", p.dilatancy_angle, Range::closed(0.0, p.friction_angle), "degrees");
   io.number_if_given("dilatancy_cutoff", p.dilatancy_cutoff, Range::open_closed(0.0, 1.0));
   io.number_or("viscoplastic_relaxation_time", p.viscoplastic_relaxation_time,
-               limits::relaxation_time_range(), "s");
+               limits::relaxation_time_range(), "s", Listed::WhenSet);
 }
 
 }  // namespace soilsph

@@ -122,7 +122,7 @@ UmatParams UmatParams::read(const TableReader& t) {
     t.fail("initial_state", "has " + std::to_string(p.initial_state.size()) +
                                 " values, state_variables = " + std::to_string(p.state_variables));
   FieldReader io(t);
-  io.choice_or("stress_unit", p.stress_unit, kStressUnitNames, kStressUnits);
+  io.choice_or("stress_unit", p.stress_unit, kStressUnitTable);
   io.number("density", p.density, Range::positive(), "kg/m^3");
   p.thread_safe = t.boolean_or("thread_safe", p.thread_safe);
   return p;
@@ -312,7 +312,7 @@ std::string UmatModel::describe_constants() const {
   const Moduli D = elasticity_.at(0.0);
   out << "  library = " << params_.library << ", symbol = " << params_.symbol << ", CMNAME = \""
       << params_.name << "\"\n  NPROPS = " << params_.props.size() << ", NSTATV = " << params_.state_variables
-      << ", stress unit " << kStressUnitNames[static_cast<int>(params_.stress_unit)] << '\n'
+      << ", stress unit " << name_of(kStressUnitTable, params_.stress_unit) << '\n'
       << "  probe call (zero strain increment from zero stress): K = " << D.K << " Pa, G = " << D.G << " Pa\n"
       << "  calls "
       << (params_.thread_safe ? "may run concurrently (thread_safe = true)"

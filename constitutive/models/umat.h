@@ -39,8 +39,11 @@ class UmatError : public std::runtime_error {
 
 /// The unit the UMAT's stresses are in.
 enum class StressUnit { Pa, kPa, MPa };
-inline constexpr StressUnit kStressUnits[] = {StressUnit::Pa, StressUnit::kPa, StressUnit::MPa};
-inline constexpr std::string_view kStressUnitNames[] = {"Pa", "kPa", "MPa"};
+inline constexpr auto kStressUnitTable = enum_table<StressUnit>({
+    {StressUnit::Pa, "Pa"},
+    {StressUnit::kPa, "kPa"},
+    {StressUnit::MPa, "MPa"},
+});
 /// Pascals per unit.
 double pascals_per(StressUnit unit);
 
@@ -49,7 +52,11 @@ enum class UmatTangent {
   Ddsdde,            ///< the UMAT's DDSDDE (central differences where it is unusable, counted)
   FiniteDifference,  ///< central differences of the UMAT's stress update
 };
-inline constexpr std::string_view kUmatTangentNames[] = {"ddsdde", "finite-difference"};
+inline constexpr auto kUmatTangentTable = enum_table<UmatTangent>({
+    {UmatTangent::Ddsdde, "ddsdde"},
+    {UmatTangent::FiniteDifference, "finite-difference"},
+});
+inline constexpr auto kUmatTangentNames = names_of(kUmatTangentTable);
 
 /// Where and when a call happens: what the caller knows besides the state (SPH: the particle).
 struct UmatCall {
@@ -73,6 +80,9 @@ struct UmatParams {
   UmatTangent tangent = UmatTangent::Ddsdde;
 
   static UmatParams read(const TableReader& table);
+  /// The keys read() reads, in the order results list them.
+  static constexpr std::string_view kKeys[] = {"density", "library", "symbol", "name", "props",
+                                               "state_variables", "initial_state", "stress_unit", "thread_safe"};
 };
 
 class UmatLibrary;

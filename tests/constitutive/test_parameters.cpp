@@ -1,6 +1,7 @@
 // Input validation: every bad value names the file, the key and the allowed range.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <fstream>
 
@@ -373,4 +374,54 @@ TEST_CASE("mohr-coulomb reads the D-P keys and an optional tension cut-off", "[p
   CHECK(describe_material(from_text(mc)).find("tension_cutoff") == std::string::npos);
   CHECK(describe_material(from_text(mc + "tension_cutoff = 1000.0\n")).find("tension_cutoff = 1000") !=
         std::string::npos);
+}
+
+// The description of a result is written from the same fields() list the reader reads: a material
+// that sets every key of its model has each of them in its description, with the value it set.
+TEST_CASE("a material that sets every key of its model is described with every key", "[parameters]") {
+  const std::string dp =
+      "[material]\nmodel = \"drucker-prager\"\ndensity = 2100\nyoung_modulus = 2000000\npoisson_ratio = 0.25\n"
+      "friction_angle = 32\ncohesion = 1500\ndilatancy_angle = 4\ndilatancy_cutoff = 0.05\n"
+      "viscoplastic_relaxation_time = 0.01\nplastic_potential = \"paper-eq20\"\nintegrator = \"substep\"\n"
+      "substep_tolerance = 0.0000001\n";
+  const std::string mc =
+      "[material]\nmodel = \"mohr-coulomb\"\ndensity = 2100\nyoung_modulus = 2000000\npoisson_ratio = 0.25\n"
+      "friction_angle = 32\ncohesion = 1500\ndilatancy_angle = 4\ndilatancy_cutoff = 0.05\n"
+      "viscoplastic_relaxation_time = 0.01\nintegrator = \"explicit\"\nsubstep_tolerance = 0.0000001\n"
+      "tension_cutoff = 500\n";
+  const std::string mcc_common =
+      "[material]\nmodel = \"modified-cam-clay\"\ndensity = 2100\npoisson_ratio = 0.25\nfriction_angle = 32\n"
+      "compression_index = 0.1\nswelling_index = 0.02\ninitial_void_ratio = 0.7\nintegrator = \"explicit\"\n"
+      "substep_tolerance = 0.0000001\nimplicit_alpha = 0.75\nimplicit_tolerance = 0.00001\n"
+      "minimum_preconsolidation = 10\nhardening_volume = \"current\"\nviscoplastic_relaxation_time = 0.01\n";
+  const std::string mcc_constant = mcc_common + "elasticity = \"constant\"\nyoung_modulus = 2000000\n";
+  const std::string mcc_pressure = mcc_common + "elasticity = \"pressure-dependent\"\nelastic_pressure_floor = 500\n";
+  const std::string elastic =
+      "[material]\nmodel = \"linear-elastic\"\ndensity = 2100\nyoung_modulus = 2000000\npoisson_ratio = 0.25\n";
+  // Each file's `key = value` lines, as the description should hold them.
+  const auto assignments = [](const std::string& text) {
+    std::vector<std::string> lines;
+    for (std::size_t from = text.find('\n') + 1, to; (to = text.find('\n', from)) != std::string::npos; from = to + 1)
+      lines.push_back(text.substr(from, to - from));
+    return lines;
+  };
+  const auto check_every_key = [&](const std::vector<std::string>& files, std::vector<std::string_view> keys) {
+    for (const std::string& file : files) {
+      const std::string description = "; " + describe_material(from_text(file)) + ";";
+      INFO(description);
+      for (const std::string& line : assignments(file)) CHECK_THAT(description, Contains("; " + line + ";"));
+      for (const std::string& line : assignments(file)) std::erase(keys, line.substr(0, line.find(" = ")));
+    }
+    CHECK(keys.empty());  // every key the model reads was set in one of the files
+  };
+  check_every_key({dp}, field_keys<DruckerPrager::Params>());
+  check_every_key({mc}, field_keys<MohrCoulomb::Params>());
+  check_every_key({mcc_constant, mcc_pressure}, field_keys<ModifiedCamClay::Params>());
+  check_every_key({elastic}, field_keys<LinearElastic::Params>());
+  // And every key the reader accepts belongs to some model.
+  for (const std::string_view key :
+       {"dilatancy_cutoff", "hardening_volume", "tension_cutoff", "library", "thread_safe", "model"}) {
+    const auto keys = material_keys();
+    CHECK(std::find(keys.begin(), keys.end(), key) != keys.end());
+  }
 }

@@ -194,7 +194,7 @@ std::string calibrated_material_toml(const CalibrationFile& file, const Calibrat
   out << "[material]\n";
   // The factory's keys in their usual order, then any others the model reads.
   std::vector<std::string> keys;
-  for (const std::string_view key : kMaterialKeys)
+  for (const std::string_view key : material_keys())
     if (c.material.contains(key)) keys.emplace_back(key);
   for (const auto& [key, value] : c.material)
     if (std::find(keys.begin(), keys.end(), key.str()) == keys.end()) keys.emplace_back(key.str());
