@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sph/initial_state.h"
+#include "../common/material_toml.h"
 #include "sph/initial_state_3d.h"
 #include "sph/scene_3d.h"
 
@@ -332,17 +333,8 @@ TEST_CASE("the geostatic state of a 3D column is the K0 closed form below its to
 
 TEST_CASE("a 3D column of Cam-clay starts on its yield surface's p_c, as in 2D", "[scene3d]") {
   std::string text = kSmallColumn;
-  text = text.substr(0, text.find("[material]")) + R"([material]
-model = "modified-cam-clay"
-density = 2000.0
-poisson_ratio = 0.3
-friction_angle = 35.0
-compression_index = 0.085
-swelling_index = 0.019
-initial_void_ratio = 0.68
-elasticity = "constant"
-young_modulus = 1.0e6
-)";
+  text = text.substr(0, text.find("[material]")) + soilsph::fixtures::kCamClayToml +
+         "elasticity = \"constant\"\nyoung_modulus = 1.0e6\n";
   text.replace(text.find("lateral_stress_ratio = 0.5"), 26, "overconsolidation_ratio = 2");
   const Scene3 s = parse_scene_3d(text, "mcc.toml");
   ParticlesOf<3> p = build_particles_3d(s);
