@@ -131,3 +131,17 @@ TEST_CASE(
   check_recovery(truth, start, fit, drained_tests(50),
                  {{"props(1)", 20e6}, {"props(3)", 32.0}, {"props(4)", 1e4}, {"props(5)", 8.0}}, 1e-6);
 }
+
+TEST_CASE("A UMAT not declared thread-safe is called one call at a time", "[calibration][umat]") {
+  // ONE-AT-A-TIME returns a NaN stress when another call is in progress, as a UMAT whose SAVE
+  // variables two threads share would go wrong: with thread_safe left false, the Jacobian's columns
+  // must not run in parallel, and the fit recovers E and nu of Hooke's law.
+  const std::string truth =
+      "model = \"linear-elastic\"\ndensity = 1900\nyoung_modulus = 20e6\npoisson_ratio = 0.3\n";
+  const std::string start =
+      "model = \"umat\"\nlibrary = \"" + std::string(SOILSPH_UMAT_MISBEHAVING_C) +
+      "\"\nsymbol = \"umat_elastic_c\"\nname = \"ONE-AT-A-TIME\"\nprops = [26e6, 0.21]\n"
+      "density = 1900\n";
+  const std::string fit = "parameters = { \"props(1)\" = [1e6, 1e8], \"props(2)\" = [0.05, 0.45] }\n";
+  check_recovery(truth, start, fit, drained_tests(20), {{"props(1)", 20e6}, {"props(2)", 0.3}}, 1e-6);
+}
