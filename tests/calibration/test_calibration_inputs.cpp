@@ -125,6 +125,16 @@ TEST_CASE("Bounds: reversed, a start outside, a key the model lacks, a bound the
     CHECK_THAT(refusal(setup), Catch::Contains("cal.toml: [fit] parameters.compression_index: not a numeric "
                                                "parameter of drucker-prager"));
   }
+  SECTION("an array element past its end, or named other than NAME(N)") {
+    setup.material = "model = \"umat\"\nlibrary = \"" + std::string(SOILSPH_UMAT_LIBRARY) +
+                     "\"\nname = \"drucker-prager\"\nprops = [20e6, 0.3, 30, 5000, 5]\nstate_variables = 4\n"
+                     "density = 1900\n";
+    for (const std::string key : {"props(6)", "props(0)", "props[3]", "props"}) {
+      setup.parameters = "parameters = { \"" + key + "\" = [20, 40] }";
+      const std::string refused = "cal.toml: [fit] parameters." + key + ": not a numeric parameter of umat";
+      CHECK_THAT(refusal(setup), Catch::Contains(refused) && Catch::Contains("props(1) to props(5)"));
+    }
+  }
   SECTION("a bound outside the model's range") {
     setup.parameters = "parameters = { friction_angle = [20, 95] }";
     CHECK_THAT(refusal(setup),

@@ -113,3 +113,35 @@ TEST_CASE("Several starts: each fitted, the lowest misfit kept, all recorded", "
   CHECK(std::abs(result.values[0] / 0.2 - 1.0) < 1e-6);
   CHECK(std::abs(result.values[2] / 28.0 - 1.0) < 1e-6);
 }
+
+TEST_CASE(
+    "A UMAT's props: libsoilsph_umat's Drucker-Prager fitted by props(N) to the built-in model's curves",
+    "[calibration][umat]") {
+  // PROPS = E, nu, phi, c, psi (docs/reference/umat-library.md); the data come from the built-in
+  // model with the same values, so the fit must find them in the UMAT's props.
+  const std::string truth =
+      "model = \"drucker-prager\"\ndensity = 1900\npoisson_ratio = 0.3\nintegrator = \"implicit\"\n"
+      "friction_angle = 32\ncohesion = 10000\ndilatancy_angle = 8\nyoung_modulus = 20e6\n";
+  const std::string start = "model = \"umat\"\nlibrary = \"" + std::string(SOILSPH_UMAT_LIBRARY) +
+                            "\"\nname = \"drucker-prager:implicit\"\nprops = [26e6, 0.3, 22.4, 13000, 5.6]\n"
+                            "state_variables = 4\ndensity = 1900\nthread_safe = true\n";
+  const std::string fit =
+      "parameters = { \"props(1)\" = [1e6, 1e8], \"props(3)\" = [10, 45], \"props(4)\" = [1000, 50000], "
+      "\"props(5)\" = [0, 20] }\n";
+  check_recovery(truth, start, fit, drained_tests(50),
+                 {{"props(1)", 20e6}, {"props(3)", 32.0}, {"props(4)", 1e4}, {"props(5)", 8.0}}, 1e-6);
+}
+
+TEST_CASE("A UMAT not declared thread-safe is called one call at a time", "[calibration][umat]") {
+  // ONE-AT-A-TIME returns a NaN stress when another call is in progress, as a UMAT whose SAVE
+  // variables two threads share would go wrong: with thread_safe left false, the Jacobian's columns
+  // must not run in parallel, and the fit recovers E and nu of Hooke's law.
+  const std::string truth =
+      "model = \"linear-elastic\"\ndensity = 1900\nyoung_modulus = 20e6\npoisson_ratio = 0.3\n";
+  const std::string start =
+      "model = \"umat\"\nlibrary = \"" + std::string(SOILSPH_UMAT_MISBEHAVING_C) +
+      "\"\nsymbol = \"umat_elastic_c\"\nname = \"ONE-AT-A-TIME\"\nprops = [26e6, 0.21]\n"
+      "density = 1900\n";
+  const std::string fit = "parameters = { \"props(1)\" = [1e6, 1e8], \"props(2)\" = [0.05, 0.45] }\n";
+  check_recovery(truth, start, fit, drained_tests(20), {{"props(1)", 20e6}, {"props(2)", 0.3}}, 1e-6);
+}

@@ -6,10 +6,14 @@
  *   PNEWDT         PNEWDT = 0.5 for every non-zero strain increment
  *   NAN-STRESS     a NaN stress for every non-zero strain increment
  *   ZERO-TANGENT   Hooke's law with DDSDDE = 0 for every non-zero strain increment
+ *   ONE-AT-A-TIME  Hooke's law, each call held open for 20 microseconds; a NaN stress when another
+ *                  call is in progress: a UMAT with SAVE variables, called from two threads at once
  * It declares its PROPS length (soilsph_umat_nprops): 2 for each of these names. */
 #include <math.h>
+#include <stdatomic.h>
 #include <stddef.h>
 #include <string.h>
+#include <time.h>
 
 static int named(const char* cmname, size_t length, const char* name) {
   const size_t n = strlen(name);
@@ -20,7 +24,7 @@ static int named(const char* cmname, size_t length, const char* name) {
 }
 
 int soilsph_umat_nprops(const char* cmname, size_t length) {
-  const char* names[] = {"ELASTIC", "HALVES", "PNEWDT", "NAN-STRESS", "ZERO-TANGENT"};
+  const char* names[] = {"ELASTIC", "HALVES", "PNEWDT", "NAN-STRESS", "ZERO-TANGENT", "ONE-AT-A-TIME"};
   for (size_t k = 0; k < sizeof names / sizeof *names; ++k)
     if (named(cmname, length, names[k])) return 2;
   return -1;
@@ -35,6 +39,17 @@ void umat_elastic_c(double* stress, double* statev, double* ddsdde, double* sse,
                     const double* celent, const double* dfgrd0, const double* dfgrd1, const int* noel,
                     const int* npt, const int* layer, const int* kspt, const int* kstep, const int* kinc,
                     size_t cmname_length) {
+  static atomic_int calls_in_progress = 0;
+  if (named(cmname, cmname_length, "ONE-AT-A-TIME")) {
+    const int others = atomic_fetch_add(&calls_in_progress, 1);
+    const struct timespec held = {0, 20000};
+    nanosleep(&held, NULL);
+    atomic_fetch_sub(&calls_in_progress, 1);
+    if (others > 0) {
+      for (int k = 0; k < *ntens; ++k) stress[k] = NAN;
+      return;
+    }
+  }
   const int n = *ntens;
   const double young = props[0], nu = props[1];
   const double lambda = young * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), mu = young / (2.0 * (1.0 + nu));

@@ -23,6 +23,13 @@ Eigen::VectorXd scaled(const std::vector<ParameterScaling>& scalings, const std:
   return z;
 }
 
+/// Whether the model may run on several threads at once: not a UMAT that is not declared
+/// thread-safe (its SAVE variables and output units are shared by every model that loads it).
+bool runs_concurrently(const MaterialTemplate& material) {
+  return material.table["model"].value_or(std::string()) != "umat" ||
+         material.table["thread_safe"].value_or(false);
+}
+
 /// The file's start, then `starts − 1` random ones (calibrate.h).
 std::vector<std::vector<double>> starting_points(const CalibrationFile& file,
                                                  const std::vector<ParameterScaling>& scalings) {
@@ -92,7 +99,8 @@ Calibration calibrate(const CalibrationFile& file) {
   const LeastSquaresOptions options{.method = file.options.method,
                                     .max_iterations = file.options.max_iterations,
                                     .tolerance = file.options.tolerance,
-                                    .difference_step = file.options.difference_step};
+                                    .difference_step = file.options.difference_step,
+                                    .concurrent = runs_concurrently(file.material)};
   for (const std::vector<double>& start : starting_points(file, scalings)) {
     Eigen::VectorXd r0;
     if (!result.starts.empty() && (++result.evaluations, !r(scaled(scalings, start), r0)))

@@ -38,7 +38,13 @@ MaterialTemplate read_material_template(const toml::table& root, const std::stri
   if (!table) throw ParameterError(source + ": no [material] table");
   const TableReader reader(*table, source, "material");
   warn_if_rate_dependent(read_material(reader), source);
-  return {.table = reader.resolved(), .source = source, .keys = {}};
+  toml::table resolved = reader.resolved();
+  // A UMAT's library is found from the file that names it; the calibrated material.toml is written
+  // elsewhere, so it names the library by its full path.
+  if (const auto library = resolved["library"].value<std::string>();
+      library && fs::path(*library).is_relative())
+    resolved.insert_or_assign("library", fs::absolute(beside(source, *library)).lexically_normal().string());
+  return {.table = std::move(resolved), .source = source, .keys = {}};
 }
 
 /// [fit] parameters = { key = [lower, upper], ... } in the file's order, each checked against the
@@ -58,8 +64,8 @@ std::vector<FitParameter> read_parameters(const toml::table& fit, const std::str
   std::vector<FitParameter> parameters;
   for (const auto& [position, key] : order) {
     const std::string at = where + "." + key;
-    const toml::node* start = material.table.get(key);
-    if (!start || !start->is_number())
+    const toml::node* start = parameter_node(material.table, key);
+    if (!start)
       throw ParameterError(at + ": not a numeric parameter of " + model +
                            " (its numeric keys: " + numeric_keys(material.table) + ")");
     const toml::array* bounds = table->get(key)->as_array();

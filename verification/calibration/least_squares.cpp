@@ -62,8 +62,8 @@ int jacobian_callback(const gsl_vector* x, void* data, gsl_matrix* J) {
       if (!evaluate(p.r, z, rz))
         throw std::runtime_error("the Jacobian was asked at a point the model cannot run");
     }
-    const Eigen::MatrixXd jacobian =
-        difference_jacobian(p.r, z, rz, p.options.difference_step, false, p.evaluations);
+    const Eigen::MatrixXd jacobian = difference_jacobian(p.r, z, rz, p.options.difference_step, false,
+                                                         p.options.concurrent, p.evaluations);
     for (Eigen::Index i = 0; i < jacobian.rows(); ++i)
       for (Eigen::Index j = 0; j < jacobian.cols(); ++j) gsl_matrix_set(J, i, j, jacobian(i, j));
   } catch (...) {
@@ -92,12 +92,13 @@ std::string stop_reason(int status, int info) {
 }  // namespace
 
 Eigen::MatrixXd difference_jacobian(const ResidualFunction& r, const Eigen::VectorXd& z,
-                                    const Eigen::VectorXd& rz, double step, bool central, long& evaluations) {
+                                    const Eigen::VectorXd& rz, double step, bool central, bool concurrent,
+                                    long& evaluations) {
   const auto n = z.size();
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(rz.size(), n);
   std::atomic<long> count = 0;
   std::exception_ptr error;
-#pragma omp parallel for schedule(dynamic)
+#pragma omp parallel for schedule(dynamic) if (concurrent)
   for (Eigen::Index j = 0; j < n; ++j) {
     try {
       const double h = step * std::max(1.0, std::abs(z(j)));
@@ -158,8 +159,8 @@ LeastSquaresResult least_squares(const ResidualFunction& r, std::size_t size, co
   if (!evaluate(r, result.z, result.residuals))
     throw std::runtime_error("the model cannot be run at the fit's end point");
   ++problem.evaluations;
-  result.jacobian =
-      difference_jacobian(r, result.z, result.residuals, kCentralStep, true, problem.evaluations);
+  result.jacobian = difference_jacobian(r, result.z, result.residuals, kCentralStep, true, options.concurrent,
+                                        problem.evaluations);
   result.history = std::move(problem.history);
   result.converged = status == GSL_SUCCESS;
   result.stop = stop_reason(status, info);

@@ -13,7 +13,8 @@
 
 namespace soilsph::calibration {
 
-/// r(z); false when the model cannot be evaluated there. Called from several threads at once.
+/// r(z); false when the model cannot be evaluated there. Called from several threads at once unless
+/// LeastSquaresOptions::concurrent is false.
 using ResidualFunction = std::function<bool(const Eigen::VectorXd& z, Eigen::VectorXd& r)>;
 
 struct LeastSquaresOptions {
@@ -21,6 +22,9 @@ struct LeastSquaresOptions {
   int max_iterations = 100;
   double tolerance = 1e-10;       ///< GSL's xtol; gtol is its square, ftol 0
   double difference_step = 1e-7;  ///< forward-difference step, times max(1, |z_j|)
+  /// Whether r may run on several threads at once; false for a UMAT not declared thread-safe (its
+  /// SAVE variables are shared by every model that loads it).
+  bool concurrent = true;
 };
 
 /// The cost ‖r‖² after an iteration (iteration 0: the start).
@@ -48,8 +52,10 @@ LeastSquaresResult least_squares(const ResidualFunction& r, std::size_t size, co
 
 /// ∂r/∂z at `z` (with r(z) given), by forward differences in parallel over the columns; a column
 /// whose forward step cannot be evaluated takes the backward one, and is 0 if neither can.
-/// `central`: central differences (two evaluations per column). Adds to `evaluations`.
+/// `central`: central differences (two evaluations per column). `concurrent`: the columns in
+/// parallel. Adds to `evaluations`.
 Eigen::MatrixXd difference_jacobian(const ResidualFunction& r, const Eigen::VectorXd& z,
-                                    const Eigen::VectorXd& rz, double step, bool central, long& evaluations);
+                                    const Eigen::VectorXd& rz, double step, bool central, bool concurrent,
+                                    long& evaluations);
 
 }  // namespace soilsph::calibration

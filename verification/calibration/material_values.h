@@ -3,9 +3,14 @@
 /// The one path from fitted values to a model: the material's TOML table with the fitted keys
 /// rewritten, read again through the validated factory (constitutive/material.h). The calibration
 /// never needs to know which model it fits: any model the factory builds, by any numeric key.
+///
+/// A fitted key names a numeric key of the table (`friction_angle`) or one element of a numeric
+/// array, counted from 1 as Fortran counts PROPS(N): `props(3)` is the third value of a UMAT's
+/// `props`, `initial_state(1)` the first of its STATEV at the start.
 #include <toml++/toml.h>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "constitutive/material.h"
 
@@ -24,7 +29,10 @@ struct MaterialTemplate {
   Material build(std::span<const double> values) const;
 };
 
-/// The numeric keys of `table`, for messages: "compression_index, density, ...".
+/// The number `key` names in `table` (`name` or `name(N)`), or nullptr when there is none.
+const toml::node* parameter_node(const toml::table& table, std::string_view key);
+
+/// The keys of `table` a fit may name, for messages: "compression_index, density, props(1) to props(5), ...".
 std::string numeric_keys(const toml::table& table);
 
 }  // namespace soilsph::calibration
