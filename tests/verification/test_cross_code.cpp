@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "tests/verification/cbgeo_cam_clay_scheme.h"
 #include "tests/verification/ogs_cam_clay_scheme.h"
 #include "verification/programme/programme.h"
 
@@ -384,8 +385,7 @@ TEST_CASE(
 // 3K(1−2ν)/(2(1+ν)), e = e_ref − λ ln(p_c0/OCR/p_ref) − κ ln OCR = 1.0385213287 (the test's
 // void_ratio), taken at the increment's start. The increment is isochoric, so p stays 200 kPa and
 // K frozen or not gives the same G: soilsph's pressure-dependent elasticity with e0 = 1.0385213287
-// must agree to round-off. (Its plastic-status case takes one backward-Euler step with K frozen at
-// the start, not compared here.)
+// must agree to round-off. (Its plastic-status case is the test after this one.)
 TEST_CASE("CB-Geo mpm ModifiedCamClay elastic increment (modified_cam_clay_test.cc)", "[cross-code]") {
   ModifiedCamClay::Params p{};
   p.density = 1800.0;
@@ -521,6 +521,62 @@ TEST_CASE("OpenGeoSys ModCamClay triaxtest (constant E, ambient pressure) agains
         CHECK(strain.norm() == Approx(expected).epsilon(std::string_view(name) == "cvode" ? 1e-7 : 1e-4));
       else
         CHECK(std::abs(strain.norm() / expected - 1.0) > 1e-2);
+    }
+  }
+}
+
+// CB-Geo's plastic-status case ("CamClay check stresses in plastic status", the same file and
+// commit as the elastic case): p_c0 = 200 kPa, OCR = 1, so e0 = e_ref − λ ln(p_c0/p_ref) and the
+// state σ = −200 kPa I is on the yield surface's tip; the same isochoric increment gives σ_xx = σ_yy =
+// −192882.4825752268 Pa, σ_zz = −211655.0108685302 Pa, p_c = 200368.9146817101 Pa. CB-Geo takes one
+// backward-Euler step with K frozen at the increment's start (tests/verification/cbgeo_cam_clay_scheme.h,
+// which reproduces these numbers to 1e-12); soilsph integrates the rate equations, which that update
+// reaches as the increment is split (υ = (1+e)/(λ−κ) with the current e is soilsph's initial volume
+// here: the increment is isochoric, e does not change). soilsph is compared with CB-Geo's numbers less
+// that step's error, (one step) − (4000 parts, Richardson-extrapolated from 2000): 10 Pa of σ_xx.
+TEST_CASE("CB-Geo mpm ModifiedCamClay plastic increment (modified_cam_clay_test.cc)", "[cross-code]") {
+  const double e0 = 1.12 - 0.1 * std::log(200e3 / 100e3);
+  const test::CbGeoCamClay cbgeo{.M = 1.2, .lambda = 0.1, .kappa = 0.03, .nu = 0.3, .e0 = e0};
+  const test::CbGeoPoint start{.stress = Eigen::Vector3d::Constant(-200e3), .pc = 200e3, .e = e0};
+  const Eigen::Vector3d d_strain(5e-4, 5e-4, -1e-3);
+  const test::CbGeoPoint one_step = test::cbgeo_update(cbgeo, start, d_strain, 1);
+  REQUIRE(one_step.stress(0) == Approx(-192882.4825752268).epsilon(1e-12));
+  REQUIRE(one_step.stress(2) == Approx(-211655.0108685302).epsilon(1e-12));
+  REQUIRE(one_step.pc == Approx(200368.9146817101).epsilon(1e-12));
+  const test::CbGeoPoint fine = test::cbgeo_update(cbgeo, start, d_strain, 4000),
+                         half = test::cbgeo_update(cbgeo, start, d_strain, 2000);
+  const Eigen::Vector3d limit_stress = 2.0 * fine.stress - half.stress;
+  const double limit_pc = 2.0 * fine.pc - half.pc;
+  const double expected_xx = -192882.4825752268 - (one_step.stress(0) - limit_stress(0));
+  const double expected_zz = -211655.0108685302 - (one_step.stress(2) - limit_stress(2));
+  const double expected_pc = 200368.9146817101 - (one_step.pc - limit_pc);
+
+  ModifiedCamClay::Params p{};
+  p.density = 1800.0;
+  p.poisson_ratio = 0.3;
+  p.friction_angle = 30.0;  // M = 1.2 (eq 26)
+  p.compression_index = 0.1;
+  p.swelling_index = 0.03;
+  p.initial_void_ratio = e0;
+  p.elasticity = Elasticity::Kind::PressureDependent;
+  State initial;
+  initial.stress = isotropic_stress(200e3);
+  initial.pc = 200e3;
+  // CB-Geo's step misses the rate equations by 5e-5 of σ_xx: more than the tolerance below.
+  CHECK(std::abs(one_step.stress(0) / limit_stress(0) - 1.0) > 1e-5);
+  // `substep` and CVODE integrate the rate equations in one increment (to their tolerances);
+  // `implicit`, itself one backward-Euler step per increment, in 100 increments.
+  for (auto [integrator, increments] :
+       {std::pair{Integrator::Implicit, 100}, std::pair{Integrator::Substep, 1}}) {
+    p.integrator = integrator;
+    const Material clay = ModifiedCamClay(p);
+    const Leg leg = strain_leg(Vec6(5e-4, 5e-4, -1e-3, 0, 0, 0), {}, increments);
+    for (const char* name : {std::string_view(integrator_name(integrator)).data(), "cvode"}) {
+      INFO(name << ", " << increments << " increments");
+      const PointRecord end = run_programme(clay, one_leg(initial, leg), name).back();
+      CHECK(-end.sig_a == Approx(expected_xx).epsilon(1e-7));
+      CHECK(-(3.0 * end.p - 2.0 * end.sig_a) == Approx(expected_zz).epsilon(1e-7));
+      CHECK(end.p_c == Approx(expected_pc).epsilon(1e-7));
     }
   }
 }
