@@ -4,7 +4,9 @@
 // docs/validation/cross-code.md).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "tests/verification/cbgeo_cam_clay_scheme.h"
@@ -578,5 +580,91 @@ TEST_CASE("CB-Geo mpm ModifiedCamClay plastic increment (modified_cam_clay_test.
       CHECK(-(3.0 * end.p - 2.0 * end.sig_a) == Approx(expected_zz).epsilon(1e-7));
       CHECK(end.p_c == Approx(expected_pc).epsilon(1e-7));
     }
+  }
+}
+
+// --- Kratos GeoMechanicsApplication: Mohr-Coulomb with tension cut-off, returns ----------------
+// Source: KratosMultiphysics/Kratos, commit 033d505c01c60e6a7f007120b4ae4dde32187c09,
+//   applications/GeoMechanicsApplication/tests/cpp_tests/custom_constitutive/
+//   test_mohr_coulomb_with_tension_cutoff.cpp: a trial stress (σ_xx, σ_yy, σ_zz, tension-positive,
+//   Pa) mapped back by the law (φ = 35°, c = 10 Pa, tensile strength T = 10 Pa, E = 1e6 Pa).
+// Definitions: Kratos returns in the (σ1, σ3) plane with σ2 held. Koiter's rule in soilsph moves σ2
+// by λ_Lamé tr(∂g) for each active plane, which is zero only where tr(∂g) = 0 (Mohr-Coulomb planes
+// with ψ = 0) or λ_Lamé = 0 (ν = 0); the cases taken are those: Kratos's regular zone and its
+// σ1 = σ2 edge ("LOWEST_PRINCIPAL_STRESSES" averaging) with ψ = 0, ν = 0.25, where both keep the mean
+// stress, and its cut-off and cut-off-apex zones with ν = 0. Its corner zone (ψ = 20°, ν = 0.25:
+// Kratos holds σ2 = 8, Koiter's rule moves it to 6.12) and its σ2 = σ3 edge average
+// ("HIGHEST_PRINCIPAL_STRESSES", which moves the mean stress by 4/3 Pa under ψ = 0) are other
+// definitions and not compared. soilsph reaches the trial stress by the strain D⁻¹ σ_trial from
+// σ = 0 (inside both surfaces); its `implicit` return is one step from that trial, and CVODE
+// integrates the straight strain path, which for these flat surfaces and fixed principal axes ends
+// at the same point. Kratos prints 13 significant digits on the edge: 1e-9 of c is the tolerance.
+namespace {
+
+struct KratosReturn {
+  const char* zone;
+  double psi, nu;
+  Eigen::Vector3d trial, expected;
+};
+
+/// The principal stresses, largest first, of a record whose shear stresses are zero: σ_xx = −sig_a,
+/// σ_yy + σ_zz = −2 sig_r, and q² = a² + 3d² with a = σ_xx − (σ_yy + σ_zz)/2, σ_yy,zz = −sig_r ± d.
+Eigen::Vector3d principal_of(const PointRecord& r) {
+  const double a = -r.sig_a + r.sig_r, d = std::sqrt(std::max(0.0, (r.q * r.q - a * a) / 3.0));
+  Eigen::Vector3d s(-r.sig_a, -r.sig_r + d, -r.sig_r - d);
+  std::sort(s.begin(), s.end(), std::greater<>());
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("Kratos MohrCoulombWithTensionCutOff returns where its definition is Koiter's rule",
+          "[cross-code]") {
+  const KratosReturn cases[] = {
+      {"regular failure zone",
+       0.0,
+       0.25,
+       {8.0, 0.0, -12.0},
+       {7.338673315592010089, 0.0, -11.338673315592010089}},
+      {"regular failure zone",
+       0.0,
+       0.25,
+       {12.0, 0.0, -16.0},
+       {7.338673315592010089, 0.0, -11.338673315592010089}},
+      {"tension cut-off zone", 20.0, 0.0, {12.0, 9.0, 8.0}, {10.0, 9.0, 8.0}},
+      {"tension cut-off zone", 20.0, 0.0, {14.0, 9.0, 6.0}, {10.0, 9.0, 6.0}},
+      {"tension apex zone", 20.0, 0.0, {19.0, 12.0, 11.0}, {10.0, 10.0, 10.0}},
+      {"tension apex zone", 20.0, 0.0, {11.5, 10.0, 10.5}, {10.0, 10.0, 10.0}},
+      {"sigma1 = sigma2 edge",
+       0.0,
+       0.25,
+       {12.0, 10.0, -16.0},
+       {7.806379130008, 7.806379130008, -9.61275826001616129}},
+  };
+  for (const KratosReturn& c : cases) {
+    INFO(c.zone << ", trial (" << c.trial.transpose() << ")");
+    MohrCoulomb::Params p{};
+    p.density = 2000.0;
+    p.young_modulus = 1e6;
+    p.poisson_ratio = c.nu;
+    p.friction_angle = 35.0;
+    p.cohesion = 10.0;
+    p.dilatancy_angle = c.psi;
+    p.tension_cutoff = 10.0;
+    p.integrator = Integrator::Implicit;
+    const MohrCoulomb mc(p);
+    // ε = ((1+ν) σ − ν tr σ I)/E, the strain whose elastic trial from σ = 0 is σ_trial.
+    const Eigen::Vector3d strain = ((1.0 + c.nu) * c.trial.array() - c.nu * c.trial.sum()).matrix() / 1e6;
+    Eigen::Vector3d expected = c.expected;
+    std::sort(expected.begin(), expected.end(), std::greater<>());
+    const State returned = mc.update(State{}, strain.asDiagonal().toDenseMatrix(), Mat3::Zero());
+    Eigen::Vector3d implicit = returned.stress.diagonal();
+    std::sort(implicit.begin(), implicit.end(), std::greater<>());
+    CHECK((implicit - expected).norm() <= 1e-9 * 10.0);
+    CHECK(returned.stress(0, 1) == 0.0);
+    const Leg leg = strain_leg(Vec6(strain(0), strain(1), strain(2), 0, 0, 0), {}, 1);
+    const Eigen::Vector3d cvode =
+        principal_of(run_programme(Material(mc), one_leg(State{}, leg), "cvode").back());
+    CHECK((cvode - expected).norm() <= 1e-9 * 10.0);
   }
 }
