@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "constitutive/rotation.h"
 #include "helpers.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/stages/artificial_stress.h"
@@ -13,7 +14,6 @@
 #include "sph/stages/momentum.h"
 #include "sph/stages/stress_update.h"
 #include "sph/stages/velocity_gradient.h"
-#include "constitutive/rotation.h"
 
 using namespace soilsph;
 using namespace soilsph::sph;
@@ -120,10 +120,12 @@ TEST_CASE("artificial stress: -eps sigma/rho^2 on tensile principal stresses onl
                        Case{200.0, 200.0, 0.3}}) {
     const double c = std::cos(k.theta), s = std::sin(k.theta);
     Particles p = test::lattice(2, kDx, kRho);
-    p.sxx[0] = k.a * c * c + k.b * s * s, p.syy[0] = k.a * s * s + k.b * c * c, p.sxy[0] = (k.a - k.b) * c * s;
+    p.sxx[0] = k.a * c * c + k.b * s * s, p.syy[0] = k.a * s * s + k.b * c * c,
+    p.sxy[0] = (k.a - k.b) * c * s;
     p.sxx[1] = -800.0, p.syy[1] = -1600.0, p.sxy[1] = -240.0;  // compression only
     compute_artificial_stress(p, eps);
-    const double ra = -eps * std::max(k.a, 0.0) / (kRho * kRho), rb = -eps * std::max(k.b, 0.0) / (kRho * kRho);
+    const double ra = -eps * std::max(k.a, 0.0) / (kRho * kRho),
+                 rb = -eps * std::max(k.b, 0.0) / (kRho * kRho);
     const double scale = eps * 800.0 / (kRho * kRho);
     CHECK(p.rxx[0] == Approx(ra * c * c + rb * s * s).margin(1e-12 * scale));
     CHECK(p.ryy[0] == Approx(ra * s * s + rb * c * c).margin(1e-12 * scale));
@@ -251,7 +253,8 @@ TEST_CASE("a failed stress update redone in parts turns the stress by each part'
   StepFailure log;
   const CoarseFailingRotatingModel fails{0.0};
   const State whole = CoarseFailingRotatingModel{2.0}.update(start, strain, spin);
-  const State parts = update_splitting_on_failure(CoarseFailingRotatingModel{0.6}, fails, start, strain, spin, log);
+  const State parts =
+      update_splitting_on_failure(CoarseFailingRotatingModel{0.6}, fails, start, strain, spin, log);
   REQUIRE(log.fallback_updates() == 1);
   const double angle = std::atan2(whole.stress(0, 1), whole.stress(0, 0));  // of the turned principal axis
   CHECK(std::abs(angle) > 0.004);
@@ -266,6 +269,51 @@ TEST_CASE("the fallback of a model with a choice of scheme is its substep twin",
   CHECK(fallback_model(ModifiedCamClay(params)).integrator() == Integrator::Substep);
 }
 
+TEST_CASE(
+    "Modified Cam-Clay with hardening_volume = current: the stress update carries each particle's volume",
+    "[stages][hardening-volume]") {
+  // Uniform plane-strain compression vx = −r x, vy = −r y on a lattice (no spin): eq 23 gives each
+  // interior particle Δε_xx = Δε_yy = −r m dt per step, so after n steps its volumetric strain is
+  // −2 n r m dt, which the hardening exponent v/(λ−κ) = (1+e0)(1 + ε_v)/(λ−κ) reads. The particle's
+  // state must be the model's own updates chained (verified against closed forms in
+  // tests/verification/test_cross_code.cpp), and differ from the initial volume's.
+  const CubicSpline W(1.3 * kDx);
+  const double m = lattice_moment(W), dt = 1e-3, step_strain = 2e-4, r = step_strain / (m * dt);
+  constexpr int kSteps = 100;  // ε_v = −0.04
+  ModifiedCamClay::Params params;
+  params.density = kRho, params.poisson_ratio = 0.3, params.friction_angle = 30.0;
+  params.compression_index = 0.077, params.swelling_index = 0.0066, params.initial_void_ratio = 0.788;
+  params.elasticity = Elasticity::Kind::PressureDependent;
+  params.integrator = Integrator::Implicit;
+  State start;
+  start.stress = -200e3 * Mat3::Identity();
+  start.pc = 200e3;
+  double pc_of[2];
+  for (HardeningVolume volume : {HardeningVolume::Current, HardeningVolume::Initial}) {
+    params.hardening_volume = volume;
+    const ModifiedCamClay model(params);
+    Particles p = test::lattice(kN, kDx, kRho);
+    for (std::size_t i = 0; i < p.size(); ++i) p.vx[i] = -r * p.x[i], p.vy[i] = -r * p.y[i];
+    for (std::size_t i = 0; i < p.soil_count; ++i) p.state[i] = start;
+    NeighbourList nl;
+    nl.build(p.x, p.y, W);
+    compute_velocity_gradient(p, nl);
+    for (int k = 0; k < kSteps; ++k) update_stress(model, p, dt);
+    State chained = start;
+    const Mat3 increment = soilsph::Vec3(-step_strain, -step_strain, 0.0).asDiagonal();
+    for (int k = 0; k < kSteps; ++k) chained = model.update(chained, increment, Mat3::Zero());
+    for (std::size_t i = 0; i < p.soil_count; ++i) {
+      if (!interior(p, i)) continue;
+      if (volume == HardeningVolume::Current)
+        CHECK(p.state[i].volumetric_strain == Approx(-2.0 * kSteps * step_strain).epsilon(1e-9));
+      CHECK(p.state[i].pc == Approx(chained.pc).epsilon(1e-8));
+      CHECK((p.state[i].stress - chained.stress).norm() <= 1e-8 * chained.stress.norm());
+    }
+    pc_of[volume == HardeningVolume::Current ? 0 : 1] = chained.pc;
+  }
+  CHECK(std::abs(pc_of[0] / pc_of[1] - 1.0) > 1e-2);
+}
+
 TEST_CASE("eq 12 with the artificial stress: (1 - eps) T / rho^2 on a pair with one particle in tension",
           "[stages]") {
   // Two particles a spacing apart along x, at rest (no viscosity), one in uniaxial tension T along
@@ -273,7 +321,7 @@ TEST_CASE("eq 12 with the artificial stress: (1 - eps) T / rho^2 on a pair with 
   // f_ij = W(dp)/W(dp) = 1, so a_0 = m_1 (T/rho^2 + R_xx) dW_01/dx_0 = m_1 (1 - eps) T/rho^2 dW/dx_0,
   // whichever of the two carries the tension (the sum over i and j is symmetric).
   const CubicSpline W(1.3 * kDx);
-  const double T = 200.0, eps = 0.5;  // Pa
+  const double T = 200.0, eps = 0.5;                     // Pa
   const double grad = W.derivative(kDx) * (-kDx) / kDx;  // ∂W/∂x_0, x_0 − x_1 = −Δp
   for (const std::size_t tensile : {std::size_t{0}, std::size_t{1}})
     for (const bool enabled : {true, false}) {
@@ -298,7 +346,8 @@ TEST_CASE("eq 12 with the artificial stress: (1 - eps) T / rho^2 on a pair with 
     }
 }
 
-TEST_CASE("the artificial stress's weight f^n from its table is within the Hermite bound of pow", "[stages]") {
+TEST_CASE("the artificial stress's weight f^n from its table is within the Hermite bound of pow",
+          "[stages]") {
   // Cubic Hermite on 1024 intervals of W in [0, W(0)]: on [f_k, f_k+1] the error is at most
   // Δ⁴/384 max|d⁴(f^n)/df⁴| (kernel_ratio_power.h); the first interval, where f^n is not four times
   // differentiable for n < 4, only within 1e-8. Linear interpolation, or a slope not scaled by the
