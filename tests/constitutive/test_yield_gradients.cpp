@@ -90,3 +90,18 @@ TEST_CASE("MCC slope M and D-P constants follow eq 26 and eq 19", "[gradient]") 
   CHECK(dp.alpha_phi() == Approx(std::tan(phi) / root));
   CHECK(dp.k_c() == Approx(3 * 10e3 / root));
 }
+
+TEST_CASE("MCC's initial preconsolidation puts a deviatoric state on its ellipse, times OCR", "[gradient]") {
+  // The ellipse q² = M² p (p_c − p) through (p, q) = (100, 60) kPa in triaxial compression gives
+  // p_c = p + q²/(M² p); with OCR 2 the surface is twice as large. Stress is tension-positive.
+  const ModifiedCamClay mcc(test::table1_cam_clay(Elasticity::Kind::Constant));
+  const double p = 100e3, q = 60e3;
+  Mat3 sigma = Mat3::Zero();
+  sigma.diagonal() << -(p + 2.0 * q / 3.0), -(p - q / 3.0), -(p - q / 3.0);
+  const double on_surface = mcc.initial_preconsolidation(sigma, 1.0, 0.0);
+  CHECK(mcc.yield(sigma, on_surface) == Approx(0.0).margin(1e-6 * p * p));
+  const double sin_phi = std::sin(test::table1_cam_clay_params().friction_angle * M_PI / 180.0);
+  const double M = 6.0 * sin_phi / (3.0 - sin_phi);  // eq 26
+  CHECK(on_surface == Approx(p + q * q / (M * M * p)).epsilon(1e-12));
+  CHECK(mcc.initial_preconsolidation(sigma, 2.0, 0.0) == Approx(2.0 * on_surface).epsilon(1e-12));
+}

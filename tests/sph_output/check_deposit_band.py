@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The deposit of a column collapse run to rest against bands derived from references, not from runs.
 
-  check_deposit_band.py OUT_DIR     (OUT_DIR holds the run's scene.toml, as run, and summary.json)
+  check_deposit_band.py OUT_DIR [--peer-runout-ratio R] [--like OTHER_OUT_DIR]
+      (OUT_DIR holds the run's scene.toml, as run, and summary.json)
 
 The soil's plane-strain friction angle phi_ps (the angle of the Mohr-Coulomb line it fails on in plane
 strain, from its model's parameters):
@@ -35,8 +36,22 @@ dp the spacing; a centre lies within a spacing of the continuum's edge, the marg
      above the highest triangle of area A at slopes <= phi_ps.
   6. height >= A / (upper runout + dp) - dp: the area A must fit under the deposit's height over its
      length.
+  7. height >= H0 - 3 dp / 2 when a < 1.15 (a low column): its back keeps its height (Lube et al. 2005:
+     plane columns below a = 1.15 collapse only at their front, the failure wedge behind the released
+     face sliding off while the top behind it stays at H0). The height is measured from the lowest
+     centres, half a spacing above the floor, and the top centres lie within a spacing below the
+     continuum's top. A column with a >= 1.15 gets no such band.
+With --peer-runout-ratio R, another code's (L - L0)/L0 for this scene at its own resolution, the run
+has a thin toe (one or two particles, which the laboratory laws do not measure: they see the front of
+the deposit), and band 4 bounds the runout where the deposit is H0/10 thick (runout_thick_m) instead of
+the toe's; the toe's runout must then be <= L0 (1 + 1.1 R) + dp (our goal: within 10 % of the peer).
+With --like OTHER_OUT_DIR, a run of the same soil, lattice and walls given another way (the imported
+column and the column keys' column): runout and height within dp of it and the angle within the fit's
+margin (atan(dp / l) above).
 Exits 1 with every violated band named.
 """
+import argparse
+import csv
 import json
 import math
 import sys
@@ -69,20 +84,31 @@ def plane_strain_friction(material: dict) -> float:
 
 def initial_height(scene: dict) -> float:
     """The column's height as a continuum: column keys put particle centres on [0, H], so their cells
-    reach half a spacing below and above; box regions fill their box."""
+    reach half a spacing below and above; box regions fill their box; imported particles' cells reach
+    half a spacing beyond the lowest and highest centre (the scene as run names the file by its full
+    path)."""
     s = scene["scene"]
     if "column_height" in s:
         return s["column_height"] + s["particle_spacing"]
-    tops = [r["max"][1] for r in scene.get("regions", []) if r.get("shape") == "box"]
+    regions = scene.get("regions", [])
+    tops = [r["max"][1] for r in regions if r.get("shape") == "box"]
+    for r in regions:
+        if r.get("shape") == "particles":
+            with open(r["file"], newline="") as f:
+                ys = [float(row["y"]) for row in csv.DictReader(f)]
+            tops.append(max(ys) - min(ys) + s["particle_spacing"])
     if not tops:
-        raise SystemExit("error: check_deposit_band.py: the scene has no column_height and no box region")
+        raise SystemExit("error: check_deposit_band.py: the scene has no column_height, box or particle region")
     return max(tops)
 
 
 def main() -> int:
-    if len(sys.argv) != 2:
-        raise SystemExit(__doc__)
-    out = Path(sys.argv[1])
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("out")
+    ap.add_argument("--peer-runout-ratio", type=float)
+    ap.add_argument("--like")
+    args = ap.parse_args()
+    out = Path(args.out)
     scene = tomllib.loads((out / "scene.toml").read_text())
     summary = json.loads((out / "summary.json").read_text())
     materials = [scene["material"]] if "material" in scene else list(scene["materials"].values())
@@ -100,16 +126,31 @@ def main() -> int:
     l_max = l0 * (1.0 + 1.8 * a) * 1.12
     runout, height, angle = summary["runout_m"], summary["height_m"], summary["repose_angle_deg"]
     fit_length = 0.8 * height / tan_phi
-    angle_max = math.degrees(math.atan(tan_phi + dp / fit_length))
+    angle_margin = math.degrees(math.atan(tan_phi + dp / fit_length)) - phi
     bands = [
         ("at rest", summary["stopped_at_rest"], f"stopped_at_rest = {summary['stopped_at_rest']}"),
-        ("repose angle", angle <= angle_max, f"{angle:.2f} deg <= {angle_max:.2f} (phi_ps {phi:.2f} + margin)"),
+        ("repose angle", angle <= phi + angle_margin, f"{angle:.2f} deg <= {phi + angle_margin:.2f} (phi_ps {phi:.2f} + margin)"),
         ("runout, statics", runout >= l_min - dp, f"{runout:.4f} m >= {l_min - dp:.4f}"),
-        ("runout, scaling laws", runout <= l_max + dp, f"{runout:.4f} m <= {l_max + dp:.4f}"),
         ("height, statics", height <= min(h0, triangle_height) + dp,
          f"{height:.4f} m <= {min(h0, triangle_height) + dp:.4f}"),
         ("height, area", height >= area / (l_max + 2 * dp) - dp, f"{height:.4f} m >= {area / (l_max + 2 * dp) - dp:.4f}"),
     ]
+    if args.peer_runout_ratio is None:
+        bands.append(("runout, scaling laws", runout <= l_max + dp, f"{runout:.4f} m <= {l_max + dp:.4f}"))
+    else:
+        thick = summary["runout_thick_m"]
+        peer_max = l0 * (1.0 + 1.1 * args.peer_runout_ratio) + dp
+        bands += [("runout where H0/10 thick, scaling laws", thick <= l_max + dp, f"{thick:.4f} m <= {l_max + dp:.4f}"),
+                  ("runout, peer", runout <= peer_max,
+                   f"{runout:.4f} m <= {peer_max:.4f} (L0 (1 + 1.1 x {args.peer_runout_ratio}) + dp)")]
+    if a < 1.15:
+        low = h0 - 1.5 * dp
+        bands.append(("height, low column", height >= low, f"{height:.4f} m >= {low:.4f} (a = {a:.3f} < 1.15)"))
+    if args.like:
+        other = json.loads((Path(args.like) / "summary.json").read_text())
+        for key, margin, unit in (("runout_m", dp, "m"), ("height_m", dp, "m"), ("repose_angle_deg", angle_margin, "deg")):
+            bands.append((f"{key} like {args.like}", abs(summary[key] - other[key]) <= margin,
+                          f"|{summary[key]:.4f} - {other[key]:.4f}| <= {margin:.4f} {unit}"))
     failed = [b for b in bands if not b[1]]
     print(f"{out}: phi_ps = {phi:.2f} deg, A = {area:.6f} m^2, H0 = {h0} m, a = {a:.3f}")
     for name, ok, words in bands:
