@@ -1,14 +1,15 @@
 #pragma once
 /// @file
 /// What the solver setups of the plane and of space (sph/solver.cpp, sph/solver_3d.cpp) derive
-/// alike from a scene: the initial sound speeds of its materials and the momentum equation's
-/// parameters.
+/// alike from a scene: the initial sound speeds of its materials, the momentum equation's
+/// parameters, and the setup itself from what each dimension's geometry adds (GeometryParts).
 #include <algorithm>
 #include <vector>
 
 #include "constitutive/material.h"
 #include "sph/kernel.h"
 #include "sph/scene_settings.h"
+#include "sph/solver.h"
 #include "sph/stages/momentum.h"
 #include "sph/time_step.h"
 
@@ -47,9 +48,43 @@ MomentumParamsOf<dim> momentum_params(const Numerics& numerics, const CubicSplin
   momentum.smoothing_length = kernel.smoothing_length();
   momentum.gravity = gravity;
   if (numerics.artificial_stress)
-    momentum.artificial_stress = {numerics.artificial_stress_epsilon, numerics.artificial_stress_exponent, kernel,
-                                  spacing};
+    momentum.artificial_stress = {numerics.artificial_stress_epsilon, numerics.artificial_stress_exponent,
+                                  kernel, spacing};
   return momentum;
+}
+
+/// What a scene's geometry gives a solver setup, which each dimension derives its own way.
+template <int dim>
+struct GeometryParts {
+  WallGuardOf<dim> guard;
+  WallMotions walls;
+  double potential_datum;  ///< height of the lowest wall along −g (m)
+  DomainOf<dim> domain;
+};
+
+/// The solver setup of a scene of either dimension (Scene or Scene3): the kernel, the time step and
+/// the stage parameters from its settings, the rest from `parts`.
+template <int dim, class Scene>
+SolverSetupOf<dim> solver_setup(const Scene& scene, GeometryParts<dim> parts) {
+  const auto& g = scene.geometry;
+  const CubicSplineKernel<dim> kernel(g.smoothing_length());
+  const InitialSoundSpeeds c = initial_sound_speeds(scene.materials, largest_initial_pressure(scene));
+  return {.kernel = kernel,
+          .cfl = scene.numerics.cfl,
+          .sound_speed = c.largest,
+          .end_time = g.end_time,
+          .frame_interval = scene.output.frame_interval,
+          .momentum = momentum_params(scene.numerics, kernel, g.gravity, g.particle_spacing, c.largest),
+          .guard = std::move(parts.guard),
+          .walls = std::move(parts.walls),
+          .potential_datum = parts.potential_datum,
+          .velocity_gradient_correction = scene.numerics.velocity_gradient_correction,
+          .pressure_dependent_stiffness = c.pressure_dependent,
+          .rest = scene.rest,
+          .domain = parts.domain,
+          .checkpoint_interval = scene.output.checkpoint_interval,
+          .constant_stiffness_sound_speed = c.constant_stiffness,
+          .ghost_body_force = scene.numerics.ghost_body_force ? g.gravity : Vec<dim>{}};
 }
 
 }  // namespace soilsph::sph

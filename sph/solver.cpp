@@ -58,38 +58,28 @@ MaterialGroups material_groups(const std::vector<Material>& materials, const Par
     std::size_t end = begin;
     while (end < p.soil_count && p.material[end] == static_cast<int>(k)) ++end;
     const Material& m = materials[k];
-    groups.push_back({m, std::visit([](const auto& model) { return Material(fallback_model(model)); }, m), begin, end,
-                      std::visit([](const auto& model) { return model.elasticity().kind(); }, m) ==
-                          Elasticity::Kind::PressureDependent});
+    groups.push_back(
+        {.model = m,
+         .fallback = std::visit([](const auto& model) { return Material(fallback_model(model)); }, m),
+         .begin = begin,
+         .end = end,
+         .pressure_dependent = std::visit([](const auto& model) { return model.elasticity().kind(); }, m) ==
+                               Elasticity::Kind::PressureDependent});
     begin = end;
   }
   if (begin != p.soil_count)
-    throw std::logic_error("material_groups: the soil particles are not ordered by material (initial_state.h)");
+    throw std::logic_error(
+        "material_groups: the soil particles are not ordered by material (initial_state.h)");
   return groups;
 }
 template MaterialGroups material_groups(const std::vector<Material>&, const ParticlesOf<2>&);
 template MaterialGroups material_groups(const std::vector<Material>&, const ParticlesOf<3>&);
 
 SolverSetup make_solver_setup(const Scene& scene) {
-  const Geometry& g = scene.geometry;
-  const CubicSpline kernel(g.smoothing_length());
-  const InitialSoundSpeeds c = initial_sound_speeds(scene.materials, largest_initial_pressure(scene));
-  return {.kernel = kernel,
-          .cfl = scene.numerics.cfl,
-          .sound_speed = c.largest,
-          .end_time = g.end_time,
-          .frame_interval = scene.output.frame_interval,
-          .momentum = momentum_params(scene.numerics, kernel, g.gravity, g.particle_spacing, c.largest),
-          .guard = wall_guard(scene),
-          .walls = wall_motions(scene),
-          .potential_datum = potential_datum(scene),
-          .velocity_gradient_correction = scene.numerics.velocity_gradient_correction,
-          .pressure_dependent_stiffness = c.pressure_dependent,
-          .rest = scene.rest,
-          .domain = domain(scene),
-          .checkpoint_interval = scene.output.checkpoint_interval,
-          .constant_stiffness_sound_speed = c.constant_stiffness,
-          .ghost_body_force = scene.numerics.ghost_body_force ? g.gravity : Vec2{}};
+  return solver_setup<2>(scene, {.guard = wall_guard(scene),
+                                 .walls = wall_motions(scene),
+                                 .potential_datum = potential_datum(scene),
+                                 .domain = domain(scene)});
 }
 
 }  // namespace soilsph::sph

@@ -503,6 +503,231 @@ struct RunControlOf {
 };
 using RunControl = RunControlOf<2>;
 
+namespace detail {
+/// The time loop of run_groups, one named step per job: its state between steps (the clock, the
+/// rest watch, the statistics, the next checkpoint and sample) and what happens before the first
+/// step, after each step (serially, on one thread) and at the end.
+template <int dim, class OnFrame, class OnStep>
+class TimeLoop {
+ public:
+  TimeLoop(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p,
+           OnFrame& on_frame, OnStep& on_step, const RunControlOf<dim>& control)
+      : groups_(groups),
+        setup_(setup),
+        p_(p),
+        on_frame_(on_frame),
+        on_step_(on_step),
+        control_(control),
+        resume_(control.resume),
+        work_(setup, p),
+        clock_(resume_ ? StepClock(setup, resume_->stats.end_time, resume_->next_frame) : StepClock(setup)),
+        rest_(resume_ ? RestWatch(setup.rest, resume_->rest) : RestWatch(setup.rest)),
+        stats_(resume_ ? resume_->stats : RunStatistics{}) {
+    if (resume_) continue_from(*resume_);
+    work_.energy_budget = starting_energy();
+    wall_before_ = stats_.wall_seconds;
+    next_checkpoint_ =
+        setup.checkpoint_interval > 0.0
+            ? setup.checkpoint_interval * (std::floor(clock_.time() / setup.checkpoint_interval) + 1)
+            : std::numeric_limits<double>::infinity();
+    next_sample_ = control.first_sample;
+    work_.sampler = control.on_sample;
+  }
+
+  /// The run: the first frame and step, then chunks of steps until a step decides to stop.
+  RunStatistics run(ThreadTuner& tuner) {
+    start();
+    while (!stop_) run_chunk(tuner);
+    if (error_) std::rethrow_exception(error_);
+    stats_ = statistics_now();
+    stats_.workspace_bytes =
+        work_.neighbours.bytes_per_particle() * p_.size() +
+        (dim + 2 + work_.x_next.size()) * p_.size() * sizeof(double);  // the *_next buffers, volume
+    return stats_;
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  /// The workspace as the run that saved `state` left it, and the same neighbour candidates: the
+  /// search from the same positions.
+  void continue_from(const LoopState& state) {
+    work_.previous_dt = state.previous_dt;
+    work_.sound_speed = state.sound_speed;
+    work_.max_speed = state.max_speed;
+    work_.moving = state.moving;
+    work_.guard_corrections = stats_.guard_corrections;
+    work_.time = state.stats.end_time;
+    setup_.walls.set_velocities(p_, work_.time);
+    work_.failure.restore_fallback_updates(stats_.fallback_stress_updates);
+    work_.neighbours.search(searched_positions<dim>(state), setup_.kernel, p_.soil_count);
+    work_.search_next = work_.neighbours.search_needed(p_.coordinates());
+  }
+
+  /// All the energy the soil holds now (blow_up.h): the kinetic energy may never exceed it.
+  double starting_energy() const {
+    double energy = 0.0;
+    for_each_group(groups_, [&](const auto& model, const auto&, std::size_t begin, std::size_t end) {
+      energy +=
+          energy_budget(p_, model.elasticity(), setup_.momentum.gravity, setup_.potential_datum, begin, end);
+    });
+    return energy;
+  }
+
+  /// Before the first step: the frame at t = 0 (not when resuming) and the first step's length.
+  void start() {
+    if (!resume_) on_frame_(p_, 0.0);
+    plan_step();
+    if (!resume_) stats_.smallest_time_step = stats_.largest_time_step = clock_.cfl_step();
+    prepare_step();
+  }
+
+  /// Chunks of about kChunkSeconds of wall time, each one parallel region with the tuner's count.
+  void run_chunk(ThreadTuner& tuner) {
+    constexpr double kChunkSeconds = 0.05;
+    const auto chunk_start = Clock::now();
+    const std::size_t first = stats_.steps,
+                      steps_now = tuner.trying() ? std::max<std::size_t>(chunk_ / 4, 4) : chunk_;
+    work_.use_threads(tuner.threads(), groups_.size());
+    const auto after_step = [this] { close(); };
+#pragma omp parallel num_threads(tuner.threads())
+    for (std::size_t k = 0; k < steps_now && !stop_; ++k)  // `stop_` is read after the closing barrier
+      advance_groups(groups_, setup_, p_, work_, dt_, after_step);
+    const std::chrono::duration<double> seconds = Clock::now() - chunk_start;
+    const auto steps = static_cast<double>(stats_.steps - first);
+    tuner.record(seconds.count(), steps * static_cast<double>(p_.soil_count));
+    if (steps > 0.0 && seconds.count() > 0.0)
+      chunk_ =
+          std::clamp<std::size_t>(static_cast<std::size_t>(kChunkSeconds * steps / seconds.count()), 4, 4096);
+  }
+
+  /// After each step, serially: a failure stops the run and is rethrown after the region.
+  void close() {
+    try {
+      throw_if_failed();
+      const bool frame_due = clock_.step_taken();
+      ++stats_.steps;
+      on_step_(clock_.time(), stats_.steps);
+      decide_stop();
+      if (frame_due || stop_) on_frame_(p_, clock_.time());
+      if (stop_) {
+        if (stats_.stop != StopReason::EndTime || !checkpoint_before_end_) checkpoint();
+        return;
+      }
+      checkpoint_if_due();
+      plan_step();
+      prepare_step();
+    } catch (...) {
+      error_ = std::current_exception();
+      stop_ = true;
+    }
+  }
+
+  /// The step's failure, blow-up or failed search as an exception naming the step and its time.
+  void throw_if_failed() const {
+    if (!work_.failed() && work_.blow_up.empty()) return;
+    const std::string when =
+        " (step " + std::to_string(stats_.steps + 1) + ", t = " + std::to_string(clock_.time()) + " s)";
+    if (!work_.blow_up.empty()) throw BlowUp(work_.blow_up + when);
+    if (work_.failure.failed()) throw IntegrationError(work_.failure.message() + when);
+    try {
+      std::rethrow_exception(work_.error);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(e.what() + when);
+    }
+  }
+
+  /// Rest, the end time or the caller's request stop the run.
+  void decide_stop() {
+    stats_.stopped_at_rest = rest_.at_rest(clock_.time(), work_.moving, p_.soil_count);
+    const bool requested = control_.stop_requested && control_.stop_requested();
+    stats_.stop = stats_.stopped_at_rest ? StopReason::Rest
+                  : clock_.at_end()      ? StopReason::EndTime
+                                         : StopReason::Request;
+    stop_ = stats_.stopped_at_rest || clock_.at_end() || requested;
+  }
+
+  /// The checkpoint of every checkpoint_interval of simulated time.
+  void checkpoint_if_due() {
+    if (clock_.time() < next_checkpoint_) return;
+    checkpoint();
+    while (next_checkpoint_ <= clock_.time()) next_checkpoint_ += setup_.checkpoint_interval;
+  }
+
+  /// The next step's length, and the range of the CFL steps.
+  void plan_step() {
+    dt_ = clock_.next_step(work_.sound_speed, work_.max_speed);
+    stats_.smallest_time_step = std::min(stats_.smallest_time_step, clock_.cfl_step());
+    stats_.largest_time_step = std::max(stats_.largest_time_step, clock_.cfl_step());
+  }
+
+  /// Serial, once dt is known: the checkpoint before the end's short steps, and whether the step samples.
+  void prepare_step() {
+    if (clock_.shortened() && !checkpoint_before_end_) {
+      checkpoint_before_end_ = true;
+      checkpoint();
+    }
+    schedule_sample();
+  }
+
+  void schedule_sample() {
+    if (!work_.sampler) return;
+    if (work_.sample_due)
+      next_sample_ =
+          control_.sample_interval * (std::floor(work_.sample_time / control_.sample_interval) + 1.0);
+    work_.sample_due = clock_.time() >= next_sample_;
+  }
+
+  /// The statistics so far, with the counts the workspace kept during the loop.
+  RunStatistics statistics_now() const {
+    RunStatistics now = stats_;
+    now.end_time = clock_.time();
+    now.wall_seconds = wall_before_ + std::chrono::duration<double>(Clock::now() - start_).count();
+    now.guard_corrections = work_.guard_corrections;
+    now.fallback_stress_updates = work_.failure.fallback_updates();
+    return now;
+  }
+
+  void checkpoint() {
+    if (!control_.checkpoint) return;
+    LoopState state{
+        .stats = statistics_now(),
+        .next_frame = clock_.next_frame(),
+        .previous_dt = work_.previous_dt,
+        .sound_speed = work_.sound_speed,
+        .max_speed = work_.max_speed,
+        .moving = work_.moving,
+        .rest = rest_.memory(),
+        .search_x = work_.neighbours.search_x(),
+        .search_y = work_.neighbours.search_y(),
+        .search_z = {},
+    };
+    if constexpr (dim == 3) state.search_z = work_.neighbours.search_positions(2);
+    control_.checkpoint(p_, state);
+  }
+
+  const MaterialGroups& groups_;
+  const SolverSetupOf<dim>& setup_;
+  ParticlesOf<dim>& p_;
+  OnFrame& on_frame_;
+  OnStep& on_step_;
+  const RunControlOf<dim>& control_;
+  const LoopState* resume_;
+  const Clock::time_point start_ = Clock::now();
+  WorkspaceOf<dim> work_;
+  StepClock clock_;
+  RestWatch rest_;
+  RunStatistics stats_;
+  double wall_before_ = 0.0;                          ///< wall time of the run before it resumed here (s)
+  double next_checkpoint_ = 0.0, next_sample_ = 0.0;  ///< s
+  bool checkpoint_before_end_ = false;  ///< written before the steps shortened onto the end time
+  double dt_ = 0.0;                     ///< the length of the next step
+  bool stop_ = false;
+  std::exception_ptr error_;
+  std::size_t chunk_ = 16;  ///< steps in the next parallel region
+};
+}  // namespace detail
+
 /// Runs to the end time, or until the soil is at rest if the scene asks for it, or until `control`
 /// asks it to stop. Calls on_frame(particles, t) at t = 0 (not when resuming), every frame interval
 /// and at the end (the time reached), and on_step(t, steps) after every step. A failed update or
@@ -514,141 +739,8 @@ RunStatistics run_groups(const MaterialGroups& groups, const SolverSetupOf<dim>&
                          OnFrame&& on_frame, OnStep&& on_step,
                          ThreadTuner tuner = ThreadTuner(omp_get_max_threads(), false),
                          const RunControlOf<dim>& control = {}) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  WorkspaceOf<dim> work(setup, p);
-  const LoopState* resume = control.resume;
-  StepClock clock = resume ? StepClock(setup, resume->stats.end_time, resume->next_frame) : StepClock(setup);
-  RestWatch rest = resume ? RestWatch(setup.rest, resume->rest) : RestWatch(setup.rest);
-  RunStatistics stats = resume ? resume->stats : RunStatistics{};
-  if (resume) {
-    work.previous_dt = resume->previous_dt;
-    work.sound_speed = resume->sound_speed;
-    work.max_speed = resume->max_speed;
-    work.moving = resume->moving;
-    work.guard_corrections = stats.guard_corrections;
-    work.time = resume->stats.end_time;
-    setup.walls.set_velocities(p, work.time);
-    work.failure.restore_fallback_updates(stats.fallback_stress_updates);
-    // The same candidates as the run that saved the state: the search from the same positions.
-    work.neighbours.search(searched_positions<dim>(*resume), setup.kernel, p.soil_count);
-    work.search_next = work.neighbours.search_needed(p.coordinates());
-  }
-  work.energy_budget = 0.0;
-  detail::for_each_group(groups, [&](const auto& model, const auto&, std::size_t begin, std::size_t end) {
-    work.energy_budget += energy_budget(p, model.elasticity(), setup.momentum.gravity, setup.potential_datum, begin, end);
-  });
-  const double wall_before = stats.wall_seconds;
-  double next_checkpoint = setup.checkpoint_interval > 0.0
-                               ? setup.checkpoint_interval * (std::floor(clock.time() / setup.checkpoint_interval) + 1)
-                               : std::numeric_limits<double>::infinity();
-  bool checkpoint_before_end = false;  // written before the steps shortened onto the end time
-  const auto statistics_now = [&] {  // the counts kept elsewhere during the loop, gathered
-    RunStatistics now = stats;
-    now.end_time = clock.time();
-    now.wall_seconds = wall_before + std::chrono::duration<double>(Clock::now() - start).count();
-    now.guard_corrections = work.guard_corrections;
-    now.fallback_stress_updates = work.failure.fallback_updates();
-    return now;
-  };
-  const auto checkpoint = [&] {
-    if (!control.checkpoint) return;
-    LoopState state{statistics_now(), clock.next_frame(), work.previous_dt, work.sound_speed,
-                    work.max_speed,   work.moving,        rest.memory(),    {},
-                    {}};
-    state.search_x = work.neighbours.search_x();
-    state.search_y = work.neighbours.search_y();
-    if constexpr (dim == 3) state.search_z = work.neighbours.search_positions(2);
-    control.checkpoint(p, state);
-  };
-  std::exception_ptr error;
-  bool stop = false;
-  double next_sample = control.first_sample;
-  work.sampler = control.on_sample;
-  const auto schedule_sample = [&] {  // serial, before each step
-    if (!work.sampler) return;
-    if (work.sample_due)
-      next_sample = control.sample_interval * (std::floor(work.sample_time / control.sample_interval) + 1.0);
-    work.sample_due = clock.time() >= next_sample;
-  };
-  if (!resume) on_frame(p, 0.0);
-  double dt = clock.next_step(work.sound_speed, work.max_speed);
-  if (!resume) stats.smallest_time_step = stats.largest_time_step = clock.cfl_step();
-  stats.smallest_time_step = std::min(stats.smallest_time_step, clock.cfl_step());
-  stats.largest_time_step = std::max(stats.largest_time_step, clock.cfl_step());
-  const auto before_step = [&] {  // serial, once dt is known: the checkpoint before the end's short steps
-    if (clock.shortened() && !checkpoint_before_end) {
-      checkpoint_before_end = true;
-      checkpoint();
-    }
-  };
-  const auto close = [&] {  // serial, after each step
-    try {
-      if (work.failed() || !work.blow_up.empty()) {
-        const std::string when =
-            " (step " + std::to_string(stats.steps + 1) + ", t = " + std::to_string(clock.time()) + " s)";
-        if (!work.blow_up.empty()) throw BlowUp(work.blow_up + when);
-        if (work.failure.failed()) throw IntegrationError(work.failure.message() + when);
-        try {
-          std::rethrow_exception(work.error);
-        } catch (const std::exception& e) {
-          throw std::runtime_error(e.what() + when);
-        }
-      }
-      const bool frame_due = clock.step_taken();
-      ++stats.steps;
-      on_step(clock.time(), stats.steps);
-      stats.stopped_at_rest = rest.at_rest(clock.time(), work.moving, p.soil_count);
-      const bool requested = control.stop_requested && control.stop_requested();
-      stats.stop = stats.stopped_at_rest ? StopReason::Rest
-                   : clock.at_end()      ? StopReason::EndTime
-                                         : StopReason::Request;
-      stop = stats.stopped_at_rest || clock.at_end() || requested;
-      if (frame_due || stop) on_frame(p, clock.time());
-      if (stop) {
-        if (stats.stop != StopReason::EndTime || !checkpoint_before_end) checkpoint();
-        return;
-      }
-      if (clock.time() >= next_checkpoint) {
-        checkpoint();
-        while (next_checkpoint <= clock.time()) next_checkpoint += setup.checkpoint_interval;
-      }
-      dt = clock.next_step(work.sound_speed, work.max_speed);
-      stats.smallest_time_step = std::min(stats.smallest_time_step, clock.cfl_step());
-      stats.largest_time_step = std::max(stats.largest_time_step, clock.cfl_step());
-      before_step();
-      schedule_sample();
-    } catch (...) {
-      error = std::current_exception();
-      stop = true;
-    }
-  };
-  before_step();
-  schedule_sample();
-  // Chunks of about kChunkSeconds of wall time, each one parallel region with the tuner's count.
-  constexpr double kChunkSeconds = 0.05;
-  std::size_t chunk = 16;
-  while (!stop) {
-    const auto chunk_start = Clock::now();
-    const std::size_t first = stats.steps,
-                      steps_now = tuner.trying() ? std::max<std::size_t>(chunk / 4, 4) : chunk;
-    work.use_threads(tuner.threads(), groups.size());
-#pragma omp parallel num_threads(tuner.threads())
-    for (std::size_t k = 0; k < steps_now && !stop; ++k)  // `stop` is read after the closing barrier
-      advance_groups(groups, setup, p, work, dt, close);
-    const std::chrono::duration<double> seconds = Clock::now() - chunk_start;
-    const auto steps = static_cast<double>(stats.steps - first);
-    tuner.record(seconds.count(), steps * static_cast<double>(p.soil_count));
-    if (steps > 0.0 && seconds.count() > 0.0)
-      chunk =
-          std::clamp<std::size_t>(static_cast<std::size_t>(kChunkSeconds * steps / seconds.count()), 4, 4096);
-  }
-
-  if (error) std::rethrow_exception(error);
-  stats = statistics_now();
-  stats.workspace_bytes = work.neighbours.bytes_per_particle() * p.size() +
-                          (dim + 2 + work.x_next.size()) * p.size() * sizeof(double);  // the *_next buffers, volume
-  return stats;
+  using Loop = detail::TimeLoop<dim, std::remove_reference_t<OnFrame>, std::remove_reference_t<OnStep>>;
+  return Loop(groups, setup, p, on_frame, on_step, control).run(tuner);
 }
 
 /// The same with one model for the whole soil (tests).

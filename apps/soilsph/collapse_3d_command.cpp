@@ -11,12 +11,8 @@
 #include "apps/soilsph/commands.h"
 #include "soilsph/version.h"
 #include "sph/collapse_3d.h"
-#include "sph/frame_buffers.h"
 #include "sph/output/atomic_file.h"
-#include "sph/output/checkpoint.h"
-#include "sph/output/frame_writer.h"
 #include "sph/output/json_text.h"
-#include "sph/output/progress.h"
 
 namespace soilsph::cli {
 namespace {
@@ -120,62 +116,37 @@ void report(const sph::Scene3& scene, const sph::Collapse3& collapse, const sph:
   std::cout << "; wall guard acted " << stats.guard_corrections << " times\n"
             << stats.wall_seconds << " s wall; output in " << dir.string() << "/\n";
 }
-/// The collapse at its start: the scene's column, or the checkpoint's particles.
-sph::Collapse3 start_collapse(const sph::Scene3& scene, std::optional<sph::CheckpointOf<3>>& resumed) {
-  return resumed ? sph::Collapse3(scene, std::move(resumed->particles)) : sph::Collapse3(scene);
-}
-
 }  // namespace
 
 void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const fs::path& dir) {
   const sph::ThreadTuner tuner = thread_tuner(o.threads);
-  std::optional<sph::CheckpointOf<3>> resumed;
-  if (!o.resume.empty()) resumed = sph::read_checkpoint<3>(dir / "checkpoint.h5");
-  sph::Collapse3 collapse = start_collapse(scene, resumed);
+  std::optional<sph::CheckpointOf<3>> resumed = resumed_checkpoint<3>(o, dir);
+  sph::Collapse3 collapse = start_collapse<sph::Collapse3>(scene, resumed);
   std::cout << "soilsph collapse (3D): "
             << (resumed ? "resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s, " : "")
             << collapse.particles().soil_count << " soil and " << collapse.particles().boundary_count()
             << " boundary particles, up to t = " << scene.geometry.end_time << " s, " << tuner.threads()
             << " thread(s); output in " << dir.string() << "/\n";
-  fs::create_directories(dir);
-  if (!resumed) remove_stale_results(dir);
-  sph::FrameWriter frames =
-      resumed ? sph::FrameWriter::continuing(dir, scene.output.fields, resumed->loop.stats.end_time, 3)
-              : sph::FrameWriter(dir, scene.output.fields, 3);
-  const std::string scene_text = sph::scene_toml(scene);
-  sph::replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
-                                            std::string(kVersion) + ")\n# " + invocation() + "\n" + scene_text);
+  RunFiles files = open_run_files<3>(dir, scene, resumed);
   RunRecord record{.stats = resumed ? resumed->loop.stats : sph::RunStatistics{},
                    .threads = tuner.threads(),
                    .complete = false,
                    .stop_reason = "running",
                    .resumed_from = resumed ? std::optional(resumed->loop.stats.end_time) : std::nullopt};
-  sph::replace_file(dir / "summary.json", summary_json(scene, collapse, record));  // says so if killed
+  const auto write_summary = [&] {
+    sph::replace_file(dir / "summary.json", summary_json(scene, collapse, record));
+  };
+  write_summary();  // says so if killed
 
   const StopSignal signal;
-  sph::RunControlOf<3> control;
-  control.stop_requested = [&signal] { return signal.received() != 0; };
-  control.checkpoint = [&](const sph::ParticlesOf<3>& p, const sph::LoopState& loop) {
-    sph::write_checkpoint(dir / "checkpoint.h5", p, loop, scene_text);
-  };
-  if (resumed) control.resume = &resumed->loop;
-  sph::FrameBuffers buffers;
-  sph::Progress progress(scene.geometry.end_time);
-  try {
-    record.stats = collapse.run(
-        tuner,
-        [&](const sph::ParticlesOf<3>& p, double t) { frames.write(buffers.view(p, t, scene.output.fields)); },
-        [&](double t, std::size_t steps) { progress.update(t, steps); }, control);
-    progress.finish();
-  } catch (const std::exception& e) {
-    progress.finish();
-    record.stop_reason = e.what();
-    sph::replace_file(dir / "summary.json", summary_json(scene, collapse, record));
-    throw;
-  }
+  const sph::RunControlOf<3> control = run_control<3>(files, signal, resumed);
+  record.stats = run_with_frames(collapse, scene, tuner, files, control, [&](const std::string& why) {
+    record.stop_reason = why;
+    write_summary();
+  });
   record.complete = record.stats.stop != sph::StopReason::Request;
   record.stop_reason = stop_reason(record.stats, signal);
-  sph::replace_file(dir / "summary.json", summary_json(scene, collapse, record));
+  write_summary();
   exit_if_stopped_by_signal(record.stats, signal, dir);
   report(scene, collapse, record.stats, dir);
 }

@@ -3,10 +3,7 @@
 // reads the scene, runs the solver, writes frames, checkpoints, summary.json and a short report.
 // What each file of DIR holds after a normal end, a signal, kill -9, a blow-up and a full disk is in
 // docs/reference/output-formats.md.
-#include <omp.h>
-
 #include <algorithm>
-#include <charconv>
 #include <iostream>
 
 #include "apps/soilsph/collapse_preparation.h"
@@ -19,70 +16,12 @@
 #include "sph/collapse.h"
 #include "sph/diagnostics.h"
 #include "sph/feasibility.h"
-#include "sph/frame_buffers.h"
-#include "sph/output/atomic_file.h"
 #include "sph/output/checkpoint.h"
-#include "sph/output/frame_writer.h"
 #include "sph/output/histories.h"
-#include "sph/output/progress.h"
 #include "sph/output/summary.h"
 
 namespace soilsph::cli {
 namespace fs = std::filesystem;
-
-/// `--threads auto`: every core (or OMP_NUM_THREADS if less), one thread while the machine is too
-/// busy for more to help (sph/thread_tuner.h); `--threads N`: N throughout, capped at the core
-/// count, since more threads than cores only wait for each other at every barrier of a step.
-sph::ThreadTuner thread_tuner(const std::string& option) {
-  const int cores = omp_get_num_procs();
-  if (option == "auto") return sph::ThreadTuner(std::min(omp_get_max_threads(), cores), true);
-  int requested = 0;
-  const auto [end, ec] = std::from_chars(option.data(), option.data() + option.size(), requested);
-  if (ec != std::errc() || end != option.data() + option.size() || requested < 1)
-    throw ParameterError("--threads " + option + ": expected \"auto\" or a whole number of threads >= 1");
-  if (requested > cores)
-    std::cerr << "soilsph collapse: --threads " << requested << " capped at the " << cores
-              << " cores of this machine\n";
-  return sph::ThreadTuner(std::min(requested, cores), false);
-}
-
-/// Files a previous run left in DIR that would describe it beside this run's frames: its summary,
-/// its checkpoint, its histories and the pictures scripts/plot_collapse.py draws.
-void remove_stale_results(const fs::path& dir) {
-  std::error_code ignored;
-  for (const char* name : {"summary.json", "summary.json.tmp", "checkpoint.h5", "checkpoint.h5.tmp",
-                           "frames.xdmf.tmp", "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png",
-                           sph::HistoryWriter::kBoundaryFile, sph::HistoryWriter::kGaugeFile, "boundary_forces.png",
-                           "gauges.png"})
-    fs::remove(dir / name, ignored);
-  if (fs::is_directory(dir, ignored))
-    for (const auto& entry : fs::directory_iterator(dir, ignored)) {
-      const std::string name = entry.path().filename().string();
-      if (name.starts_with("velocity_t") && name.ends_with(".png")) fs::remove(entry.path(), ignored);
-    }
-}
-
-/// The run's folder: the one --resume continues, --out, or results/<the scene file's stem>, so that
-/// runs of different scenes never replace each other.
-fs::path run_folder(const CollapseOptions& o) {
-  if (!o.resume.empty()) return o.resume;
-  if (!o.out.empty()) return o.out;
-  return fs::path("results") / fs::path(o.scene).stem();
-}
-
-std::string stop_reason(const sph::RunStatistics& stats, const StopSignal& signal) {
-  return stats.stop == sph::StopReason::Rest      ? "at rest"
-         : stats.stop == sph::StopReason::EndTime ? "end time"
-                                                  : std::string("signal ") + StopSignal::name(signal.received());
-}
-
-void exit_if_stopped_by_signal(const sph::RunStatistics& stats, const StopSignal& signal, const fs::path& dir) {
-  if (stats.stop != sph::StopReason::Request) return;
-  std::cerr << "soilsph collapse: stopped by " << StopSignal::name(signal.received()) << " at t = " << stats.end_time
-            << " s after " << stats.steps << " steps; frames, checkpoint and summary.json are in " << dir.string()
-            << "/; continue with: soilsph collapse --resume " << dir.string() << '\n';
-  throw ExitCode{128 + signal.received()};
-}
 
 namespace {
 
@@ -201,19 +140,12 @@ sph::AnyScene scene_to_run(const CollapseOptions& o, const fs::path& dir) {
   return sph::parse_any_scene(sph::read_checkpoint_scene(file), file.string() + " (scene)", o.overrides);
 }
 
-/// The checkpoint of the 2D run --resume continues from, or nothing for a new run.
-std::optional<sph::Checkpoint> resumed_checkpoint(const CollapseOptions& o, const fs::path& dir) {
-  if (o.resume.empty()) return std::nullopt;
-  return sph::read_checkpoint(dir / "checkpoint.h5");
-}
-
 /// The collapse at its start: the scene's particles (relaxed under gravity if it asks), or the
 /// checkpoint's. Building the particles refuses a lattice or geostatic state that --set made
 /// impossible: say so.
 sph::Collapse start_collapse(const sph::Scene& scene, std::optional<sph::Checkpoint>& resumed) {
-  return blaming_overrides(scene.overrides, [&] {
-    return resumed ? sph::Collapse(scene, std::move(resumed->particles)) : sph::Collapse(scene);
-  });
+  return blaming_overrides(scene.overrides,
+                           [&] { return cli::start_collapse<sph::Collapse>(scene, resumed); });
 }
 
 void report_gravity_loading(const sph::Collapse& collapse, const sph::Scene& scene) {
@@ -256,31 +188,6 @@ void announce_run(const CollapseOptions& o, const sph::Scene& scene, const sph::
   note_serialised_umats(scene, tuner.threads());
 }
 
-/// What a run writes into its folder as it goes.
-struct RunFiles {
-  fs::path dir;
-  sph::FrameWriter frames;
-  std::string scene_text;  ///< the scene as run, saved in every checkpoint
-  std::optional<sph::Histories> histories;
-};
-
-/// The folder's files at the start: nothing of an earlier run may stay beside this one's frames
-/// (unless it is the run being continued), and the scene as run is written first, so that even a
-/// run killed at once says what it was.
-RunFiles open_run_files(const fs::path& dir, const sph::Scene& scene,
-                        const std::optional<sph::Checkpoint>& resumed,
-                        std::optional<sph::Histories> histories) {
-  if (!resumed) remove_stale_results(dir);
-  sph::FrameWriter frames =
-      resumed ? sph::FrameWriter::continuing(dir, scene.output.fields, resumed->loop.stats.end_time)
-              : sph::FrameWriter(dir, scene.output.fields);
-  std::string scene_text = sph::scene_toml(scene);
-  sph::replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
-                                            std::string(kVersion) + ")\n# " + invocation() + "\n" +
-                                            scene_text);
-  return {dir, std::move(frames), std::move(scene_text), std::move(histories)};
-}
-
 /// The summary a run starts with (complete: false, "running"); a resumed run's carries the
 /// figures of its checkpoint.
 sph::Summary starting_summary(const sph::Scene& scene, const sph::Collapse& collapse, int threads,
@@ -293,46 +200,14 @@ sph::Summary starting_summary(const sph::Scene& scene, const sph::Collapse& coll
   return summary;
 }
 
-/// How the time loop reports back: a stop on a signal, checkpoints into the folder, the histories'
-/// samples; and where a resumed run continues from.
-sph::RunControl run_control(RunFiles& files, const sph::Scene& scene, const StopSignal& signal,
-                            const std::optional<sph::Checkpoint>& resumed) {
-  sph::RunControl control;
-  control.stop_requested = [&signal] { return signal.received() != 0; };
-  control.checkpoint = [&files](const sph::Particles& p, const sph::LoopState& loop) {
-    sph::write_checkpoint(files.dir / "checkpoint.h5", p, loop, files.scene_text);
-  };
-  if (resumed) control.resume = &resumed->loop;
-  if (files.histories) {
-    files.histories->open(files.dir, resumed ? resumed->loop.stats.end_time : -1.0);
-    control.on_sample = [&files](const sph::StepSample& s) { (*files.histories)(s); };
-    control.sample_interval = scene.output.history_interval;
-    control.first_sample = files.histories->first_sample();
-  }
-  return control;
-}
-
-/// Runs the collapse, writing frames and progress as it goes; a run that fails records why in
-/// summary.json (complete: false) before the error is passed on.
-sph::RunStatistics run_with_frames(sph::Collapse& collapse, const sph::ThreadTuner& tuner, RunFiles& files,
-                                   const sph::RunControl& control, const sph::Scene& scene,
-                                   sph::Summary& summary) {
-  sph::FrameBuffers buffers;
-  sph::Progress progress(scene.geometry.end_time);
-  const auto on_frame = [&](const sph::Particles& p, double t) {
-    files.frames.write(buffers.view(p, t, scene.output.fields));
-  };
-  const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
-  try {
-    const sph::RunStatistics stats = collapse.run(tuner, on_frame, on_step, control);
-    progress.finish();
-    return stats;
-  } catch (const std::exception& e) {
-    progress.finish();
-    summary.stop_reason = e.what();
-    sph::write_summary_json(files.dir / "summary.json", summary);
-    throw;
-  }
+/// The histories' samples of the time loop, into the folder; a resumed run's continue its files.
+void add_histories(sph::RunControl& control, std::optional<sph::Histories>& histories, const fs::path& dir,
+                   const sph::Scene& scene, const std::optional<sph::Checkpoint>& resumed) {
+  if (!histories) return;
+  histories->open(dir, resumed ? resumed->loop.stats.end_time : -1.0);
+  control.on_sample = [&histories](const sph::StepSample& s) { (*histories)(s); };
+  control.sample_interval = scene.output.history_interval;
+  control.first_sample = histories->first_sample();
 }
 
 /// The summary at the end: the run's figures and why it stopped.
@@ -399,9 +274,10 @@ void run_collapse(const CollapseOptions& o) {
   check_scene_or_resume(o);
   const fs::path dir = run_folder(o);
   const sph::AnyScene any = scene_to_run(o, dir);
-  if (const auto* space = std::get_if<sph::Scene3>(&any)) return run_collapse_3d(o, *space, dir);  // chosen once
+  if (const auto* space = std::get_if<sph::Scene3>(&any))
+    return run_collapse_3d(o, *space, dir);  // chosen once
   const sph::Scene& scene = std::get<sph::Scene>(any);
-  std::optional<sph::Checkpoint> resumed = resumed_checkpoint(o, dir);
+  std::optional<sph::Checkpoint> resumed = resumed_checkpoint<2>(o, dir);
   const sph::ThreadTuner tuner = thread_tuner(o.threads);
   const sph::RunEstimate estimate = feasible_estimate(scene);
   sph::Collapse collapse = start_collapse(scene, resumed);
@@ -410,12 +286,17 @@ void run_collapse(const CollapseOptions& o) {
   std::optional<sph::Histories> histories = scene_histories(scene, collapse.particles(), collapse.setup());
   announce_run(o, scene, collapse, estimate, tuner, resumed, dir);
 
-  RunFiles files = open_run_files(dir, scene, resumed, std::move(histories));
+  RunFiles files = open_run_files<2>(dir, scene, resumed);
   sph::Summary summary = starting_summary(scene, collapse, tuner.threads(), resumed);
   sph::write_summary_json(dir / "summary.json", summary);
   const StopSignal signal;
-  const sph::RunControl control = run_control(files, scene, signal, resumed);
-  const sph::RunStatistics stats = run_with_frames(collapse, tuner, files, control, scene, summary);
+  sph::RunControl control = run_control<2>(files, signal, resumed);
+  add_histories(control, histories, dir, scene, resumed);
+  const sph::RunStatistics stats =
+      run_with_frames(collapse, scene, tuner, files, control, [&](const std::string& why) {
+        summary.stop_reason = why;
+        sph::write_summary_json(dir / "summary.json", summary);
+      });
   record_end(summary, stats, collapse, signal, dir);
   exit_if_stopped_by_signal(stats, signal, dir);
   warn_if_wall_guard_acted(stats, scene);

@@ -1,0 +1,87 @@
+// The steps of `soilsph collapse` that scenes of the plane and of space share and that do not depend
+// on the dimension (collapse_run.h).
+#include <omp.h>
+
+#include <algorithm>
+#include <charconv>
+#include <iostream>
+
+#include "apps/soilsph/collapse_run.h"
+#include "apps/soilsph/commands.h"
+#include "constitutive/parameters.h"
+#include "soilsph/version.h"
+#include "sph/output/atomic_file.h"
+#include "sph/output/histories.h"
+
+namespace soilsph::cli {
+namespace fs = std::filesystem;
+
+/// `--threads auto`: every core (or OMP_NUM_THREADS if less), one thread while the machine is too
+/// busy for more to help (sph/thread_tuner.h); `--threads N`: N throughout, capped at the core
+/// count, since more threads than cores only wait for each other at every barrier of a step.
+sph::ThreadTuner thread_tuner(const std::string& option) {
+  const int cores = omp_get_num_procs();
+  if (option == "auto") return sph::ThreadTuner(std::min(omp_get_max_threads(), cores), true);
+  int requested = 0;
+  const auto [end, ec] = std::from_chars(option.data(), option.data() + option.size(), requested);
+  if (ec != std::errc() || end != option.data() + option.size() || requested < 1)
+    throw ParameterError("--threads " + option + ": expected \"auto\" or a whole number of threads >= 1");
+  if (requested > cores)
+    std::cerr << "soilsph collapse: --threads " << requested << " capped at the " << cores
+              << " cores of this machine\n";
+  return sph::ThreadTuner(std::min(requested, cores), false);
+}
+
+/// Files a previous run left in DIR that would describe it beside this run's frames: its summary,
+/// its checkpoint, its histories and the pictures scripts/plot_collapse.py draws.
+void remove_stale_results(const fs::path& dir) {
+  std::error_code ignored;
+  for (const char* name :
+       {"summary.json", "summary.json.tmp", "checkpoint.h5", "checkpoint.h5.tmp", "frames.xdmf.tmp",
+        "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png", sph::HistoryWriter::kBoundaryFile,
+        sph::HistoryWriter::kGaugeFile, "boundary_forces.png", "gauges.png"})
+    fs::remove(dir / name, ignored);
+  if (fs::is_directory(dir, ignored))
+    for (const auto& entry : fs::directory_iterator(dir, ignored)) {
+      const std::string name = entry.path().filename().string();
+      if (name.starts_with("velocity_t") && name.ends_with(".png")) fs::remove(entry.path(), ignored);
+    }
+}
+
+/// The run's folder: the one --resume continues, --out, or results/<the scene file's stem>, so that
+/// runs of different scenes never replace each other.
+fs::path run_folder(const CollapseOptions& o) {
+  if (!o.resume.empty()) return o.resume;
+  if (!o.out.empty()) return o.out;
+  return fs::path("results") / fs::path(o.scene).stem();
+}
+
+std::string stop_reason(const sph::RunStatistics& stats, const StopSignal& signal) {
+  return stats.stop == sph::StopReason::Rest ? "at rest"
+         : stats.stop == sph::StopReason::EndTime
+             ? "end time"
+             : std::string("signal ") + StopSignal::name(signal.received());
+}
+
+void exit_if_stopped_by_signal(const sph::RunStatistics& stats, const StopSignal& signal,
+                               const fs::path& dir) {
+  if (stats.stop != sph::StopReason::Request) return;
+  std::cerr << "soilsph collapse: stopped by " << StopSignal::name(signal.received())
+            << " at t = " << stats.end_time << " s after " << stats.steps
+            << " steps; frames, checkpoint and summary.json are in " << dir.string()
+            << "/; continue with: soilsph collapse --resume " << dir.string() << '\n';
+  throw ExitCode{128 + signal.received()};
+}
+
+RunFiles open_run_files(const fs::path& dir, std::string scene_text, sph::FieldSet fields, int dimension,
+                        std::optional<double> resumed_at) {
+  if (!resumed_at) remove_stale_results(dir);
+  sph::FrameWriter frames = resumed_at ? sph::FrameWriter::continuing(dir, fields, *resumed_at, dimension)
+                                       : sph::FrameWriter(dir, fields, dimension);
+  sph::replace_file(dir / "scene.toml", "# soilsph collapse: the scene as run, every key resolved (" +
+                                            std::string(kVersion) + ")\n# " + invocation() + "\n" +
+                                            scene_text);
+  return {dir, std::move(frames), std::move(scene_text)};
+}
+
+}  // namespace soilsph::cli
