@@ -58,9 +58,8 @@ MaterialGroups material_groups(const std::vector<Material>& materials, const Par
     std::size_t end = begin;
     while (end < p.soil_count && p.material[end] == static_cast<int>(k)) ++end;
     const Material& m = materials[k];
-    groups.push_back({m, std::visit([](const auto& model) { return Material(fallback_model(model)); }, m), begin, end,
-                      std::visit([](const auto& model) { return model.elasticity().kind(); }, m) ==
-                          Elasticity::Kind::PressureDependent});
+    groups.push_back({m, std::visit([](const auto& model) { return Material(fallback_model(model)); }, m),
+                      begin, end, stiffness_follows_state(m)});
     begin = end;
   }
   if (begin != p.soil_count)

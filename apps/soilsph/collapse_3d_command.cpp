@@ -161,10 +161,13 @@ void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const f
   if (resumed) control.resume = &resumed->loop;
   sph::FrameBuffers buffers;
   sph::Progress progress(scene.geometry.end_time);
+  const int state_variables = sph::frame_state_variables(scene.output, scene.materials);
   try {
     record.stats = collapse.run(
         tuner,
-        [&](const sph::ParticlesOf<3>& p, double t) { frames.write(buffers.view(p, t, scene.output.fields)); },
+        [&](const sph::ParticlesOf<3>& p, double t) {
+          frames.write(buffers.view(p, t, scene.output.fields, state_variables));
+        },
         [&](double t, std::size_t steps) { progress.update(t, steps); }, control);
     progress.finish();
   } catch (const std::exception& e) {

@@ -319,8 +319,9 @@ sph::RunStatistics run_with_frames(sph::Collapse& collapse, const sph::ThreadTun
                                    sph::Summary& summary) {
   sph::FrameBuffers buffers;
   sph::Progress progress(scene.geometry.end_time);
+  const int state_variables = sph::frame_state_variables(scene.output, scene.materials);
   const auto on_frame = [&](const sph::Particles& p, double t) {
-    files.frames.write(buffers.view(p, t, scene.output.fields));
+    files.frames.write(buffers.view(p, t, scene.output.fields, state_variables));
   };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
   try {

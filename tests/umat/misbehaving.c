@@ -6,9 +6,13 @@
  *   PNEWDT         PNEWDT = 0.5 for every non-zero strain increment
  *   NAN-STRESS     a NaN stress for every non-zero strain increment
  *   ZERO-TANGENT   Hooke's law with DDSDDE = 0 for every non-zero strain increment
+ *   SEGFAULT       a write through a null pointer for every non-zero strain increment
+ *   ABORT          abort() for every non-zero strain increment
+ *   STOP           exit(0), as Fortran's STOP does, for every non-zero strain increment
  * It declares its PROPS length (soilsph_umat_nprops): 2 for each of these names. */
 #include <math.h>
 #include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int named(const char* cmname, size_t length, const char* name) {
@@ -20,7 +24,8 @@ static int named(const char* cmname, size_t length, const char* name) {
 }
 
 int soilsph_umat_nprops(const char* cmname, size_t length) {
-  const char* names[] = {"ELASTIC", "HALVES", "PNEWDT", "NAN-STRESS", "ZERO-TANGENT"};
+  const char* names[] = {"ELASTIC",      "HALVES",   "PNEWDT", "NAN-STRESS",
+                         "ZERO-TANGENT", "SEGFAULT", "ABORT",  "STOP"};
   for (size_t k = 0; k < sizeof names / sizeof *names; ++k)
     if (named(cmname, length, names[k])) return 2;
   return -1;
@@ -52,6 +57,12 @@ void umat_elastic_c(double* stress, double* statev, double* ddsdde, double* sse,
     *pnewdt = 0.5;
     return;
   }
+  if (largest > 0.0 && named(cmname, cmname_length, "SEGFAULT")) {
+    int* volatile nowhere = NULL;
+    *nowhere = 1;
+  }
+  if (largest > 0.0 && named(cmname, cmname_length, "ABORT")) abort();
+  if (largest > 0.0 && named(cmname, cmname_length, "STOP")) exit(0);
   if (largest > 0.0 && named(cmname, cmname_length, "NAN-STRESS")) {
     for (int k = 0; k < n; ++k) stress[k] = NAN;
     return;
