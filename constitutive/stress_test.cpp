@@ -1,5 +1,7 @@
 #include "constitutive/stress_test.h"
 
+#include "constitutive/tangent.h"
+
 #include <chrono>
 #include <cmath>
 #include <random>
@@ -51,6 +53,33 @@ bool out_of_range(const Model&, const State& s) {
   return false;
 }
 
+/// A UMAT plug-in's checks: finite STRESS and STATEV (the adapter throws for a non-finite one), the
+/// declared ranges of STATEV, and now and then DDSDDE against central differences of the update.
+std::string check_umat(const UmatModel& model, const State& start, const Mat3& d_eps, const State& s, long k,
+                       const StressTestOptions& options, StressTestResult& r) {
+  for (const StateVariableRange& range : options.state_ranges) {
+    const double v = s.umat.statev[static_cast<std::size_t>(range.index - 1)];
+    if (!(v >= range.lo && v <= range.hi)) {
+      std::ostringstream out;
+      out << "STATEV(" << range.index << ") = " << v << " left its range [" << range.lo << ", " << range.hi
+          << "]";
+      return out.str();
+    }
+  }
+  if (options.tangent_every <= 0 || k % options.tangent_every != 0) return "";
+  const Mat6 returned = model.returned_tangent(start, d_eps);
+  const Mat6 differences = finite_difference_tangent(model, start, d_eps);
+  const double error = (returned - differences).norm() / std::max(differences.norm(), 1e-300);
+  ++r.tangent_checks;
+  r.worst_tangent_error = std::max(r.worst_tangent_error, error);
+  if (error <= options.tangent_tolerance) return "";
+  ++r.tangent_mismatches;
+  std::ostringstream out;
+  out << "DDSDDE differs from central differences of the update by " << error
+      << " (relative, Frobenius norm)";
+  return out.str();
+}
+
 /// Checks one updated state; returns a description of what is wrong, or "" when all is well.
 template <class Model>
 std::string check(const Model& model, const State& start, const Mat3& d_eps, const State& s,
@@ -84,6 +113,18 @@ std::string check(const Model& model, const State& start, const Mat3& d_eps, con
     }
   }
   return "";
+}
+
+/// The checks of the model's kind: a UMAT plug-in's, or a built-in model's.
+template <class Model>
+std::string check_update(const Model& model, const State& start, const Mat3& d_eps, const State& s, long k,
+                         const StressTestOptions& options, StressTestResult& r) {
+  if constexpr (std::is_same_v<Model, UmatModel>) {
+    if (!s.stress.allFinite()) return "non-finite state";
+    return check_umat(model, start, d_eps, s, k, options, r);
+  } else {
+    return check(model, start, d_eps, s, options, r);
+  }
 }
 
 void classify(const StateMarks& marks, StressTestResult& r) {
@@ -130,16 +171,19 @@ StressTestResult walk(const Model& model, const StressTestOptions& options) {
     if (kind == Segment::Reverse) ++r.unloading;
     try {
       const State next = model.update(state, d_eps, d_spin);
-      const std::string problem = check(model, state, d_eps, next, options, r);
+      const std::string problem = check_update(model, state, d_eps, next, k, options, r);
       if (!problem.empty()) {
         if (r.violations++ == 0 && r.first_problem.empty()) record(r, k, problem, state, d_eps, d_spin);
         state = fresh_state(model, rng);
         continue;
       }
       if (next.plastic_multiplier > 0.0) ++r.plastic;
-      classify(model.marks(next), r);
+      if constexpr (requires { model.marks(next); }) classify(model.marks(next), r);
       state = out_of_range(model, next) ? fresh_state(model, rng) : next;
     } catch (const IntegrationError& e) {
+      if (r.failures++ == 0 && r.first_problem.empty()) record(r, k, e.what(), state, d_eps, d_spin);
+      state = fresh_state(model, rng);
+    } catch (const UmatError& e) {  // a plug-in's non-finite result, PNEWDT to the end, or crash
       if (r.failures++ == 0 && r.first_problem.empty()) record(r, k, e.what(), state, d_eps, d_spin);
       state = fresh_state(model, rng);
     }
@@ -164,6 +208,15 @@ StressTestResult run_stress_test(const Material& material, Integrator integrator
         }
       },
       material);
+}
+
+StressTestResult run_umat_stress_test(const UmatModel& umat, const StressTestOptions& options) {
+  for (const StateVariableRange& range : options.state_ranges)
+    if (range.index < 1 || range.index > umat.params().state_variables)
+      throw std::invalid_argument("stress test: STATEV(" + std::to_string(range.index) +
+                                  ") is not a state variable of the UMAT (state_variables = " +
+                                  std::to_string(umat.params().state_variables) + ")");
+  return walk(umat, options);
 }
 
 std::vector<StressTestMaterial> stress_test_materials() {

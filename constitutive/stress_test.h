@@ -21,12 +21,22 @@
 
 namespace soilsph {
 
+/// The admissible range lo ≤ STATEV(index) ≤ hi of one UMAT state variable (index from 1).
+struct StateVariableRange {
+  int index = 1;
+  double lo = 0.0, hi = 0.0;
+};
+
 struct StressTestOptions {
   long increments = 100000;
   std::uint64_t seed = 1;
   double max_increment = 5e-2;    ///< largest strain-increment norm
   double yield_tolerance = 1e-8;  ///< accepted normalized_yield() after an update
   long restart_every = 2000;      ///< increments between fresh random starting states
+  // A UMAT plug-in (run_umat_stress_test), whose yield surface soilsph does not know:
+  std::vector<StateVariableRange> state_ranges;  ///< every update's STATEV must stay in these
+  long tangent_every = 10;                       ///< DDSDDE against central differences every N increments
+  double tangent_tolerance = 1e-3;  ///< accepted ‖DDSDDE − D_fd‖ / ‖D_fd‖ (Frobenius norms)
 };
 
 struct StressTestResult {
@@ -45,11 +55,20 @@ struct StressTestResult {
   State problem_start;                ///< the state before that increment (to reproduce it)
   Mat3 problem_strain = Mat3::Zero(), problem_spin = Mat3::Zero();  ///< and the increment
   double seconds = 0.0;                                             ///< wall time of the walk
+  long tangent_checks = 0;           ///< UMAT: increments whose DDSDDE was compared with central differences
+  long tangent_mismatches = 0;       ///< UMAT: of those, beyond tangent_tolerance (counted as violations too)
+  double worst_tangent_error = 0.0;  ///< UMAT: the largest relative difference seen
 };
 
 /// Runs the walk for `material` with its integrator replaced by `integrator` (not for linear elastic).
 StressTestResult run_stress_test(const Material& material, Integrator integrator,
                                  const StressTestOptions& options);
+
+/// Runs the walk for a UMAT plug-in with its own update. Its yield surface is the plug-in's own, so
+/// the checks are those that hold for any model: a finite STRESS and STATEV (a UmatError counts as a
+/// failure), every STATEV in `options.state_ranges`, and every `tangent_every`-th increment the
+/// returned DDSDDE against central differences of the update (constitutive/tangent.h).
+StressTestResult run_umat_stress_test(const UmatModel& umat, const StressTestOptions& options);
 
 /// One material of the stress test: its description, a short label (benchmark names) and the model.
 struct StressTestMaterial {

@@ -6,18 +6,33 @@
 #include <algorithm>
 #include <vector>
 
+#include "constitutive/material.h"
 #include "sph/output/frame.h"
 #include "sph/particles.h"
+#include "sph/scene_settings.h"
 
 namespace soilsph::sph {
+
+/// How many STATEV the frames carry: with [output] state_variables the largest NSTATV of the scene's
+/// UMAT materials, else none.
+inline int frame_state_variables(const OutputSettings& output, const std::vector<Material>& materials) {
+  int count = 0;
+  if (output.state_variables)
+    for (const Material& m : materials)
+      if (const auto* umat = std::get_if<UmatModel>(&m))
+        count = std::max(count, umat->params().state_variables);
+  return count;
+}
 
 class FrameBuffers {
  public:
   /// A view of the soil particles of `p` at time t, in 2D or 3D (Frame::dimension). Only the derived
   /// fields in `fields` are computed; the spans of the others are empty (a FrameWriter with the same
   /// fields skips them).
+  /// `state_variables` > 0: the first that many UMAT STATEV of every particle too (Frame).
   template <int dim>
-  Frame view(const ParticlesOf<dim>& p, double t, FieldSet fields = FieldSet::all()) {
+  Frame view(const ParticlesOf<dim>& p, double t, FieldSet fields = FieldSet::all(),
+             int state_variables = 0) {
     const std::size_t n = p.soil_count;
     const bool stress = fields.contains(Field::stress), mean = fields.contains(Field::p),
                mises = fields.contains(Field::q), plastic = fields.contains(Field::plastic_strain);
@@ -57,11 +72,16 @@ class FrameBuffers {
     f.density = {p.density.data(), n};
     f.layer = p.layer;
     f.material = p.material;
+    statev_.resize(static_cast<std::size_t>(state_variables) * n);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(state_variables); ++k)
+      for (std::size_t i = 0; i < n; ++i) statev_[k * n + i] = p.state[i].umat.statev[k];
+    f.state_variables = statev_;
+    f.state_variable_count = state_variables;
     return f;
   }
 
  private:
-  std::vector<double> sxx_, syy_, szz_, sxy_, sxz_, syz_, p_, q_, plastic_;
+  std::vector<double> sxx_, syy_, szz_, sxy_, sxz_, syz_, p_, q_, plastic_, statev_;
 };
 
 }  // namespace soilsph::sph

@@ -236,6 +236,8 @@ OutputSettings read_output(const TableReader& t, double end_time) {
   // Ten samples per frame: a sample costs about one step's acceleration, once in tens of steps.
   o.history_interval =
       t.number_or("history_interval", 0.1 * o.frame_interval, Range::closed(0.0, end_time), "s");
+  // Off unless asked for, and then listed in the scene as run (a scene without it reads as before).
+  if (t.has("state_variables")) o.state_variables = t.boolean_or("state_variables", false);
   return o;
 }
 
@@ -259,6 +261,11 @@ SceneSettings read_settings(const SceneTables& t, std::span<const std::size_t> u
   InitialConditions initial = read_initial(t.initial, in_use, names_in_use, soil);
   Numerics numerics = read_numerics(t.numerics);
   OutputSettings output = read_output(t.output, soil.end_time);
+  if (output.state_variables && std::none_of(in_use.begin(), in_use.end(), [](const Material& m) {
+        return std::holds_alternative<UmatModel>(m);
+      }))
+    t.output.fail("state_variables",
+                  "= true, but no material of the scene is a umat (only UMAT plug-ins have state variables)");
   const RunLimits limits{t.scene.number_or("max_run_hours", 24.0, Range::positive(), "h")};
   Material first = in_use.front();
   return SceneSettings{.source = t.source,

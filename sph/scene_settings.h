@@ -59,6 +59,7 @@ struct OutputSettings {
   FieldSet fields;             ///< fields written in every frame besides the positions (default: all)
   double checkpoint_interval;  ///< s of simulated time between checkpoints (DIR/checkpoint.h5)
   double history_interval;     ///< s between samples of boundary_forces.csv and gauges.csv; 0: none
+  bool state_variables = false;  ///< UMAT plug-ins' STATEV in every frame (statev_1 …); listed when set
 };
 
 /// [scene] bounds on what a run may cost (sph/feasibility.h), for a user to lift deliberately.

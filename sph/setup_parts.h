@@ -28,8 +28,7 @@ inline InitialSoundSpeeds initial_sound_speeds(const std::vector<Material>& mate
   for (const Material& material : materials) {
     const double ck = p_wave_speed(material, p0);
     c.largest = std::max(c.largest, ck);
-    if (std::visit([](const auto& m) { return m.elasticity().kind(); }, material) ==
-        Elasticity::Kind::PressureDependent)
+    if (stiffness_follows_state(material))
       c.pressure_dependent = true;
     else
       c.constant_stiffness = std::max(c.constant_stiffness, ck);

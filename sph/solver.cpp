@@ -58,13 +58,11 @@ MaterialGroups material_groups(const std::vector<Material>& materials, const Par
     std::size_t end = begin;
     while (end < p.soil_count && p.material[end] == static_cast<int>(k)) ++end;
     const Material& m = materials[k];
-    groups.push_back(
-        {.model = m,
-         .fallback = std::visit([](const auto& model) { return Material(fallback_model(model)); }, m),
-         .begin = begin,
-         .end = end,
-         .pressure_dependent = std::visit([](const auto& model) { return model.elasticity().kind(); }, m) ==
-                               Elasticity::Kind::PressureDependent});
+    groups.push_back({.model = m,
+                      .fallback = std::visit([](const auto& model) { return Material(fallback_model(model)); }, m),
+                      .begin = begin,
+                      .end = end,
+                      .pressure_dependent = stiffness_follows_state(m)});
     begin = end;
   }
   if (begin != p.soil_count)

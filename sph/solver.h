@@ -57,7 +57,7 @@ namespace soilsph::sph {
 struct MaterialGroup {
   Material model, fallback;
   std::size_t begin = 0, end = 0;
-  bool pressure_dependent = false;  ///< its elastic stiffness follows the pressure (MCC's κ)
+  bool pressure_dependent = false;  ///< its stiffness follows the state (MCC's κ, a UMAT's DDSDDE)
 };
 using MaterialGroups = std::vector<MaterialGroup>;
 
@@ -190,16 +190,43 @@ void for_each_group(const MaterialGroups& groups, F&& f) {
         group.model);
 }
 
-/// The largest P-wave speed of the soil now: each pressure-dependent material's over its own
-/// particles at their pressure, and the constant-stiffness materials' fixed one.
+/// The largest wave speed of the particles [begin, end) of one material: the P-wave speed of its
+/// elasticity at each particle's pressure, or for a UMAT plug-in √(ρc²/ρ) with ρc² from its DDSDDE
+/// at each particle's state (UmatModel::wave_modulus) and ρ the material's: the time step follows
+/// the stiffest particle.
+template <class Model, int dim>
+double largest_wave_speed(const Model& model, const ParticlesOf<dim>& p, std::size_t begin, std::size_t end) {
+  if constexpr (requires { model.wave_modulus(State{}, UmatCall{}); }) {
+    // The material's density, as for the models of constant stiffness: a free-surface particle's SPH
+    // density, short of neighbours, would inflate its c.
+    const double density = model.params().density;
+    double c = 0.0;
+    for (std::size_t i = begin; i < end; ++i)
+      c = std::max(c, std::sqrt(model.wave_modulus(p.state[i], umat_call_at(p, i, 0.0)) / density));
+    return c;
+  } else {
+    return largest_p_wave_speed(model.elasticity(), p, begin, end);
+  }
+}
+
+/// The largest P-wave speed of the soil now: each state-dependent material's over its own
+/// particles at their state, and the constant-stiffness materials' fixed one.
 template <int dim>
 double current_sound_speed(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& p) {
   double c = setup.constant_stiffness_sound_speed;
   for (const MaterialGroup& group : groups)
     if (group.pressure_dependent)
-      c = std::max(c, std::visit([&](const auto& m) { return largest_p_wave_speed(m.elasticity(), p, group.begin, group.end); },
-                                 group.model));
+      c = std::max(c,
+                   std::visit([&](const auto& m) { return largest_wave_speed(m, p, group.begin, group.end); },
+                              group.model));
   return c;
+}
+
+/// Whether the first step needs c from the particles: a UMAT's stiffness at the start is its
+/// DDSDDE at each particle's geostatic state, which the probe at zero stress does not know.
+inline bool stiffness_from_particles(const MaterialGroups& groups) {
+  return std::any_of(groups.begin(), groups.end(),
+                     [](const MaterialGroup& g) { return std::holds_alternative<UmatModel>(g.model); });
 }
 
 /// What the time loop's global decisions read of the soil after a step (rest, blow-up, the next
@@ -378,8 +405,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
 template <class Model, int dim>
 MaterialGroups single_material(const Model& model, const ParticlesOf<dim>& p) {
   bool pressure_dependent = false;
-  if constexpr (requires { model.elasticity(); })
-    pressure_dependent = model.elasticity().kind() == Elasticity::Kind::PressureDependent;
+  if constexpr (requires { model.elasticity(); }) pressure_dependent = stiffness_follows_state(model);
   return {MaterialGroup{Material(model), Material(fallback_model(model)), 0, p.soil_count, pressure_dependent}};
 }
 
@@ -523,7 +549,10 @@ class TimeLoop {
         clock_(resume_ ? StepClock(setup, resume_->stats.end_time, resume_->next_frame) : StepClock(setup)),
         rest_(resume_ ? RestWatch(setup.rest, resume_->rest) : RestWatch(setup.rest)),
         stats_(resume_ ? resume_->stats : RunStatistics{}) {
-    if (resume_) continue_from(*resume_);
+    if (resume_)
+      continue_from(*resume_);
+    else if (stiffness_from_particles(groups))
+      work_.sound_speed = current_sound_speed(groups, setup, p);
     work_.energy_budget = starting_energy();
     wall_before_ = stats_.wall_seconds;
     next_checkpoint_ =

@@ -30,6 +30,20 @@ inline double p_wave_speed(const Material& material, double p) {
   return p_wave_speed(elasticity.at(p), density(material));
 }
 
+/// Whether a material's stiffness follows its state, so that c is re-evaluated from the particles:
+/// pressure-dependent elasticity (MCC's κ), or a UMAT plug-in (its DDSDDE at each particle's state,
+/// UmatModel::wave_modulus).
+template <class Model>
+bool stiffness_follows_state(const Model& model) {
+  if constexpr (requires { model.wave_modulus(State{}, UmatCall{}); })
+    return true;
+  else
+    return model.elasticity().kind() == Elasticity::Kind::PressureDependent;
+}
+inline bool stiffness_follows_state(const Material& material) {
+  return std::visit([](const auto& m) { return stiffness_follows_state(m); }, material);
+}
+
 /// Δt = C_cfl h / (c + v_max) (s).
 inline double cfl_time_step(double cfl, double smoothing_length, double sound_speed, double max_speed = 0.0) {
   return cfl * smoothing_length / (sound_speed + max_speed);

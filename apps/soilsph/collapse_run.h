@@ -93,8 +93,9 @@ sph::RunStatistics run_with_frames(Collapse& collapse, const Scene& scene, const
                                    RunFiles& files, const Control& control, RecordFailure&& record_failure) {
   sph::FrameBuffers buffers;
   sph::Progress progress(scene.geometry.end_time);
+  const int state_variables = sph::frame_state_variables(scene.output, scene.materials);
   const auto on_frame = [&](const auto& p, double t) {
-    files.frames.write(buffers.view(p, t, scene.output.fields));
+    files.frames.write(buffers.view(p, t, scene.output.fields, state_variables));
   };
   const auto on_step = [&](double t, std::size_t steps) { progress.update(t, steps); };
   try {

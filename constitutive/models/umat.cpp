@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "constitutive/models/umat_crash_guard.h"
 #include "constitutive/rotation.h"
 #include "constitutive/tangent.h"
 
@@ -145,6 +147,7 @@ UmatModel::UmatModel(const Params& params) : params_(params) {
                          " values, state_variables = " + std::to_string(params_.state_variables));
   if (!(params_.density > 0.0)) throw ParameterError("density must be > 0 kg/m^3");
   library_ = UmatLibrary::open(params_.library, params_.symbol);
+  install_umat_crash_guard();
   if (auto* declared = library_->declared_props()) {
     std::string cmname = params_.name;
     cmname.resize(kCmnameLength, ' ');
@@ -172,6 +175,7 @@ UmatModel::UmatModel(const Params& params) : params_(params) {
         " Pa, G = " + format_number(G) + " Pa: " + params_.library + ": " + params_.symbol +
         " must return a positive stiffness there (soilsph's first Newton guess and SPH time step "
         "use it)");
+  probe_wave_modulus_ = probe_tangent_.diagonal().maxCoeff();
   const double E = 9.0 * K * G / (3.0 * K + G), nu = (3.0 * K - 2.0 * G) / (2.0 * (3.0 * K + G));
   elasticity_ = Elasticity::constant(E, nu);
 }
@@ -225,15 +229,31 @@ UmatModel::Outcome UmatModel::call(const State& state, const Vec6& strain_increm
   std::fill(std::begin(cmname), std::end(cmname), ' ');
   std::copy(params_.name.begin(), params_.name.end(), cmname);
 
-  {
-    std::unique_lock<std::mutex> lock;
-    if (!params_.thread_safe) lock = std::unique_lock(library_->call_mutex());
+  auto umat = [&] {
     library_->function()(stress.data(), statev.data(), ddsdde.data(), &sse, &spd, &scd, &rpl, ddsddt, drplde,
                          &drpldt, stran.data(), dstran.data(), time, &dtime, &temp, &dtemp, predef, dpred,
                          cmname, &ndi, &nshr, &ntens, &nstatv, props, &nprops, where.coordinates.data(),
                          rotation.data(), &pnewdt, &celent, dfgrd0.data(), dfgrd1.data(), &noel, &npt, &layer,
                          &kspt, kstep, &kinc, kCmnameLength);
+  };
+  const UmatCallSite site{.library = library_->path().c_str(),
+                          .symbol = library_->symbol().c_str(),
+                          .name = params_.name.c_str(),
+                          .increment = kinc,
+                          .element = noel,
+                          .time = from.umat.time,
+                          .time_increment = dtime};
+  int crash = 0;
+  {
+    std::unique_lock<std::mutex> lock;
+    if (!params_.thread_safe) lock = std::unique_lock(library_->call_mutex());
+    crash = guarded_umat_call(
+        site, [](void* f) { (*static_cast<decltype(umat)*>(f))(); }, &umat);
   }
+  if (crash != 0)
+    throw UmatError(describe_call(from, where) + "crashed with " + describe_signal(crash) +
+                    " inside the call (the library's own fault: run the UMAT under a debugger, or with "
+                    "gfortran -g -fcheck=all, from this state)");
 
   Outcome out{from, ddsdde * unit, pnewdt};
   if (pnewdt < 1.0) return out;  // the caller retries with half the increment
@@ -301,6 +321,18 @@ Mat6 UmatModel::consistent_tangent(const State& state, const Mat3& strain_increm
         "returned an unusable DDSDDE (not finite or all zero) and the stress does not respond to the "
         "strain increment either");
   return differences;
+}
+
+double UmatModel::wave_modulus(const State& state, const UmatCall& where) const {
+  UmatCall now = where;
+  now.time_increment = 0.0;
+  try {
+    const Outcome zero = call(state, Vec6::Zero(), Mat3::Identity(), now);
+    const double stiffest = zero.tangent.diagonal().maxCoeff();
+    if (std::isfinite(stiffest)) return std::max(stiffest, probe_wave_modulus_);
+  } catch (const UmatError&) {
+  }
+  return probe_wave_modulus_;
 }
 
 long UmatModel::fallback_count() const {

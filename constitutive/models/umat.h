@@ -114,6 +114,11 @@ class UmatModel : public NoHardeningVariable {
   /// The tangent of update(state, strain_increment): DDSDDE, or central differences (params.tangent,
   /// or where DDSDDE is not finite or all zero: counted by fallback_count()).
   Mat6 consistent_tangent(const State& state, const Mat3& strain_increment) const;
+  /// ρc² (Pa) for the SPH time step at `state`: the largest diagonal entry of the DDSDDE of a call
+  /// with a zero strain increment and DTIME = 0 from it (the stiffness the next increment starts
+  /// with; Anura3D bounds its critical time step by the same entry), and never less than the probe
+  /// call's. A call that fails gives the probe's (the stress update that follows says why).
+  double wave_modulus(const State& state, const UmatCall& where) const;
   /// How many tangents were central differences because DDSDDE was unusable.
   long fallback_count() const;
   /// The tangent as the UMAT returns it, for the tangent check (soilsph material --check-tangent).
@@ -133,6 +138,7 @@ class UmatModel : public NoHardeningVariable {
   std::shared_ptr<UmatLibrary> library_;
   Elasticity elasticity_;
   Mat6 probe_tangent_ = Mat6::Zero();
+  double probe_wave_modulus_ = 0.0;  ///< the largest diagonal entry of the probe's DDSDDE (Pa)
 };
 
 }  // namespace soilsph

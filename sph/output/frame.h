@@ -67,6 +67,10 @@ struct Frame {
   int dimension = 2;                           ///< 2: positions (x, y, 0); 3: (x, y, z) and the spans below
   std::span<const double> z{}, vz{};           ///< 3D only: m, m/s
   std::span<const double> sxz{}, syz{};        ///< 3D only: Pa, tension-positive
+  /// UMAT plug-ins' STATEV ([output] state_variables): variable k (from 0) of particle i at k n + i,
+  /// written as statev_1 … statev_K; zeros for a particle of a built-in model. Empty: none.
+  std::span<const double> state_variables{};
+  int state_variable_count = 0;  ///< K
 };
 
 }  // namespace soilsph::sph

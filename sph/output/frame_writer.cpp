@@ -101,6 +101,11 @@ std::string vertices_name(std::size_t particles) {
   return "vertices_" + std::to_string(particles);
 }
 
+/// The dataset of a UMAT's STATEV(k), k from 1.
+std::string statev_name(int k) {
+  return "statev_" + std::to_string(k);
+}
+
 std::string dimensions(std::size_t particles, int components) {
   return components == 1 ? std::to_string(particles)
                          : std::to_string(particles) + " " + std::to_string(components);
@@ -164,10 +169,12 @@ FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet f
     if (!std::filesystem::exists(path)) break;
     double time = 0.0;
     std::size_t particles = 0;
+    int state_variables = 0;
     {
       const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
       const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access), H5Fclose, "open " + path.string());
       time = hdf5::read_double_attribute(file, "time");
+      while (H5Lexists(file, statev_name(state_variables + 1).c_str(), H5P_DEFAULT) > 0) ++state_variables;
       const Handle set(H5Dopen2(file, "position", H5P_DEFAULT), H5Dclose, "open " + path.string() + ":/position");
       const Handle space(H5Dget_space(set), H5Sclose, "read the dataspace of " + path.string() + ":/position");
       std::array<hsize_t, 2> dims{};
@@ -179,7 +186,7 @@ FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet f
       }
       break;
     }
-    writer.frames_.push_back({time, particles});
+    writer.frames_.push_back({time, particles, state_variables});
   }
   writer.write_index();
   writer.write_xdmf();
@@ -241,10 +248,16 @@ void FrameWriter::write(const Frame& frame) {
   if (has(Field::density)) check_size(frame.density.size());
   if (has(Field::layer)) check_size(frame.layer.size());
   if (has(Field::material)) check_size(frame.material.size());
+  const auto statev_count = static_cast<std::size_t>(std::max(frame.state_variable_count, 0));
+  if (frame.state_variables.size() != statev_count * n)
+    throw std::invalid_argument("FrameWriter: the frame at t = " + exact(frame.time) + " has " +
+                                std::to_string(frame.state_variables.size()) + " state-variable values for " +
+                                std::to_string(statev_count) + " variables of " + std::to_string(n) +
+                                " particles");
   const std::filesystem::path path = frame_path(frames_.size());
   const std::string where = path.string() + ":/";
   // Room first, so that a full disk is one clear message rather than HDF5's failure half-way.
-  std::uintmax_t values = 3 * n;
+  std::uintmax_t values = 3 * n + statev_count * n;
   for (const XdmfField& f : kFields) values += fields_.contains(f.field) && written_in(f, dimension_) ? f.components * n : 0;
   ensure_room(path, 8 * values + kFileOverhead);
   write_file_atomically(path, [&](hid_t file) {
@@ -281,6 +294,9 @@ void FrameWriter::write(const Frame& frame) {
       write_dataset(file, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.layer.data(), where);
     if (has(Field::material))
       write_dataset(file, "material", H5T_STD_I32LE, H5T_NATIVE_INT, n, 1, frame.material.data(), where);
+    for (std::size_t k = 0; k < statev_count; ++k)
+      hdf5::write_doubles(file, statev_name(static_cast<int>(k) + 1), frame.state_variables.subspan(k * n, n),
+                          where);
   });
   const std::filesystem::path vertices = h5_path_.parent_path() / kFrameFolder / (vertices_name(n) + ".h5");
   if (!std::filesystem::exists(vertices)) {
@@ -291,7 +307,7 @@ void FrameWriter::write(const Frame& frame) {
     });
   }
   // The frame's file is complete on disk before the index and the XDMF point at it.
-  frames_.push_back({frame.time, n});
+  frames_.push_back({frame.time, n, static_cast<int>(statev_count)});
   write_index();
   write_xdmf();
 }
@@ -328,6 +344,12 @@ void FrameWriter::write_xdmf() const {
       out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << field.attribute_type
           << "\" Center=\"Node\">\n";
       data_item(field.name, field.number_type, field.precision, field.components);
+      out << "        </Attribute>\n";
+    }
+    for (int k = 1; k <= frames_[index].state_variables; ++k) {
+      out << "        <Attribute Name=\"" << statev_name(k)
+          << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+      data_item(statev_name(k).c_str(), "Float", 8, 1);
       out << "        </Attribute>\n";
     }
     out << "      </Grid>\n";

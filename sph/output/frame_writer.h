@@ -59,6 +59,7 @@ class FrameWriter {
   struct FrameEntry {
     double time;
     std::size_t particles;
+    int state_variables = 0;  ///< statev_1 … of the frame (Frame::state_variable_count)
   };
   void write_xdmf() const;
   void write_index() const;

@@ -117,6 +117,18 @@ double z_coordinate(const ParticlesOf<dim>& p, std::size_t i) {
     return p.z[i];
 }
 
+/// Where and when a UMAT plug-in is called for soil particle i over dt: NOEL the particle (from 1),
+/// DTIME the step, CELENT the particle's spacing: √(m/ρ) in the plane (m per metre of thickness),
+/// ∛(m/ρ) in space; COORDS its position.
+template <int dim>
+UmatCall umat_call_at(const ParticlesOf<dim>& p, std::size_t i, double dt) {
+  const double volume = p.mass[i] / p.density[i];
+  return {.element = static_cast<int>(i) + 1,
+          .time_increment = dt,
+          .characteristic_length = dim == 2 ? std::sqrt(volume) : std::cbrt(volume),
+          .coordinates = soilsph::Vec3(p.x[i], p.y[i], z_coordinate(p, i))};
+}
+
 /// σ^{n+1} of soil particle i for the velocity gradient L over dt, and the stress the momentum stage
 /// reads (in-plane in the plane, all six components in space) copied from it; a failed update is
 /// recorded and leaves the particle unchanged. A material with a viscoplastic relaxation time relaxes
@@ -128,14 +140,7 @@ void update_particle_stress(const Model& model, const Model& fallback, Particles
     const Mat3 strain = L.strain_increment(dt), spin = L.spin_increment(dt);
     State next;
     if constexpr (requires { model.update(p.state[i], strain, spin, UmatCall{}); }) {
-      // A UMAT plug-in learns where and when it is called: NOEL the particle (from 1), DTIME the step,
-      // CELENT the particle's spacing: √(m/ρ) in the plane (m per metre of thickness), ∛(m/ρ) in space.
-      const double volume = p.mass[i] / p.density[i];
-      next = model.update(p.state[i], strain, spin,
-                          UmatCall{.element = static_cast<int>(i) + 1,
-                                   .time_increment = dt,
-                                   .characteristic_length = dim == 2 ? std::sqrt(volume) : std::cbrt(volume),
-                                   .coordinates = soilsph::Vec3(p.x[i], p.y[i], z_coordinate(p, i))});
+      next = model.update(p.state[i], strain, spin, umat_call_at(p, i, dt));  // a UMAT learns where and when
     } else {
       next = update_splitting_on_failure(model, fallback, p.state[i], strain, spin, failure);
     }

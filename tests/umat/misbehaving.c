@@ -8,10 +8,14 @@
  *   ZERO-TANGENT   Hooke's law with DDSDDE = 0 for every non-zero strain increment
  *   ONE-AT-A-TIME  Hooke's law, each call held open for 20 microseconds; a NaN stress when another
  *                  call is in progress: a UMAT with SAVE variables, called from two threads at once
+ *   SEGFAULT       a write through a null pointer for every non-zero strain increment
+ *   ABORT          abort() for every non-zero strain increment
+ *   STOP           exit(0), as Fortran's STOP does, for every non-zero strain increment
  * It declares its PROPS length (soilsph_umat_nprops): 2 for each of these names. */
 #include <math.h>
 #include <stdatomic.h>
 #include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -24,7 +28,8 @@ static int named(const char* cmname, size_t length, const char* name) {
 }
 
 int soilsph_umat_nprops(const char* cmname, size_t length) {
-  const char* names[] = {"ELASTIC", "HALVES", "PNEWDT", "NAN-STRESS", "ZERO-TANGENT", "ONE-AT-A-TIME"};
+  const char* names[] = {"ELASTIC",  "HALVES", "PNEWDT", "NAN-STRESS",   "ZERO-TANGENT",
+                         "SEGFAULT", "ABORT",  "STOP",   "ONE-AT-A-TIME"};
   for (size_t k = 0; k < sizeof names / sizeof *names; ++k)
     if (named(cmname, length, names[k])) return 2;
   return -1;
@@ -67,6 +72,12 @@ void umat_elastic_c(double* stress, double* statev, double* ddsdde, double* sse,
     *pnewdt = 0.5;
     return;
   }
+  if (largest > 0.0 && named(cmname, cmname_length, "SEGFAULT")) {
+    int* volatile nowhere = NULL;
+    *nowhere = 1;
+  }
+  if (largest > 0.0 && named(cmname, cmname_length, "ABORT")) abort();
+  if (largest > 0.0 && named(cmname, cmname_length, "STOP")) exit(0);
   if (largest > 0.0 && named(cmname, cmname_length, "NAN-STRESS")) {
     for (int k = 0; k < n; ++k) stress[k] = NAN;
     return;

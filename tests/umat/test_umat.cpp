@@ -7,10 +7,13 @@
 #include <string>
 
 #include "constitutive/material.h"
+#include "constitutive/stress_test.h"
 #include "constitutive/tangent.h"
 #include "tests/common/table1_materials.h"
 #include "verification/closed_form/closed_form.h"
+#include "verification/report/case_result.h"
 #include "verification/report/curve_errors.h"
+#include "verification/report/verification_case.h"
 
 using namespace soilsph;
 using namespace soilsph::verification;
@@ -191,3 +194,90 @@ TEST_CASE("A relative library path is relative to the TOML file", "[umat]") {
   CHECK(std::get<UmatModel>(m).params().library ==
         std::filesystem::absolute(dir / "lib" / "elastic.so").lexically_normal().string());
 }
+
+TEST_CASE("A UMAT that crashes or aborts inside a call gets an error naming the call, and soilsph goes on",
+          "[umat]") {
+  for (const auto& [name, signal] : {std::pair{"SEGFAULT", "SIGSEGV"}, std::pair{"ABORT", "SIGABRT"}}) {
+    CAPTURE(name);
+    const Material bad = umat_material(kElasticC, "symbol = \"umat_elastic_c\"\nname = \"" +
+                                                      std::string(name) + "\"\nprops = [1.0e6, 0.3]\n");
+    PointTest test;
+    test.strain_targets = {0.01};
+    test.increments = 4;
+    CHECK_THROWS_WITH(run_point_test(bad, test, "implicit"),
+                      Catch::Contains(kElasticC) && Catch::Contains("umat_elastic_c") &&
+                          Catch::Contains("KINC = 1, NOEL = 1") &&
+                          Catch::Contains(std::string("crashed with ") + signal));
+  }
+  // The process is whole: the same library's sound entry still runs (q = E ε_a, drained triaxial).
+  const Material elastic =
+      umat_material(kElasticC, "symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1.0e6, 0.3]\n");
+  PointTest test;
+  test.strain_targets = {0.01};
+  test.increments = 4;
+  CHECK(run_point_test(elastic, test, "implicit").back().q == Approx(1e4).epsilon(1e-10));
+}
+
+#ifdef SOILSPH_UMAT_DRUCKER_PRAGER_F
+TEST_CASE("verify runs a case of a UMAT against the closed form of the model it claims to be", "[umat]") {
+  const TempDir temp;
+  std::ofstream(temp.path / "dp-umat.toml")
+      << "[material]\nmodel = \"umat\"\ndensity = 2000.0\nlibrary = \"" << SOILSPH_UMAT_DRUCKER_PRAGER_F
+      << "\"\nprops = [1.0e6, 0.3, 35.0, 0.0, 0.0]\nstate_variables = 1\n";
+  // Table 1's D-P (φ = 35°), and the same soil with φ = 30°: a closed form the UMAT does not follow.
+  std::ofstream(temp.path / "dp-30.toml")
+      << "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\n"
+         "young_modulus = 1.0e6\npoisson_ratio = 0.3\nfriction_angle = 30.0\n";
+  const std::string table1 = std::string(SOILSPH_SOURCE_DIR) + "/data/materials/dp-table1.toml";
+  const auto case_text = [](const std::string& name, const std::string& path, const std::string& closed_form,
+                            const std::string& against) {
+    return "[[case]]\nname = \"" + name + "\"\nmaterial = \"dp-umat.toml\"\npath = \"" + path +
+           "\"\nstrain_targets = [0.3]\nclosed_form = \"" + closed_form + "\"\nclosed_form_material = \"" +
+           against + "\"\ntolerance = { umat = 1e-8 }\n";
+  };
+  std::ofstream(temp.path / "cases.toml")
+      << case_text("umat-drained", "triaxial-drained", "dp-triaxial-drained", table1)
+      << case_text("umat-undrained", "triaxial-undrained", "dp-triaxial-undrained", table1)
+      << case_text("umat-against-phi-30", "triaxial-drained", "dp-triaxial-drained", "dp-30.toml");
+  const auto cases = verification::read_cases(temp.path / "cases.toml");
+  REQUIRE(cases.size() == 3);
+  for (const auto& c : cases) {
+    const verification::CaseResult result = verification::run_case(c);
+    CAPTURE(c.name);
+    REQUIRE(result.runs.size() == 1);
+    CHECK(result.runs[0].integrator == "umat");
+    CHECK(result.runs[0].passed == (c.name != "umat-against-phi-30"));
+  }
+  // A UMAT case takes no CVODE or integrator tolerance; a built-in case no umat one.
+  std::ofstream(temp.path / "bad.toml")
+      << "[[case]]\nname = \"bad\"\nmaterial = \"dp-umat.toml\"\npath = "
+         "\"triaxial-drained\"\nstrain_targets = [0.3]\ntolerance = { cvode = 1e-5 }\n";
+  CHECK_THROWS_WITH(verification::read_cases(temp.path / "bad.toml"),
+                    Catch::Contains("cvode") && Catch::Contains("does not apply to a umat material"));
+}
+
+TEST_CASE("stress-test walks a UMAT: the D-P UMAT passes, wrong ranges and tangents are caught", "[umat]") {
+  const UmatModel dp = std::get<UmatModel>(umat_material(
+      SOILSPH_UMAT_DRUCKER_PRAGER_F, "props = [1.0e6, 0.3, 35.0, 5000.0, 5.0]\nstate_variables = 1\n"));
+  StressTestOptions options;
+  options.increments = 2000;
+  // STATEV(1), the accumulated plastic multiplier, is never negative.
+  options.state_ranges = {{.index = 1, .lo = 0.0, .hi = 1e300}};
+  const StressTestResult sound = run_umat_stress_test(dp, options);
+  CAPTURE(sound.first_problem);
+  CHECK(sound.failures == 0);
+  CHECK(sound.violations == 0);
+  CHECK(sound.tangent_checks == 200);
+  CHECK(sound.worst_tangent_error < 1e-5);  // the consistent tangent of the return
+  // A range it leaves (the multiplier grows past 1e-6 on the first plastic increments) is a violation.
+  options.state_ranges = {{.index = 1, .lo = 0.0, .hi = 1e-6}};
+  CHECK(run_umat_stress_test(dp, options).violations > 0);
+  // A UMAT whose DDSDDE is zero for every increment fails the tangent check on every comparison.
+  const UmatModel zero = std::get<UmatModel>(umat_material(
+      kElasticC, "symbol = \"umat_elastic_c\"\nname = \"ZERO-TANGENT\"\nprops = [1.0e6, 0.3]\n"));
+  options.state_ranges.clear();
+  const StressTestResult wrong = run_umat_stress_test(zero, options);
+  CHECK(wrong.tangent_mismatches == wrong.tangent_checks);
+  CHECK(wrong.worst_tangent_error == Approx(1.0));
+}
+#endif

@@ -140,8 +140,9 @@ void write_report(const fs::path& folder, const std::vector<CaseResult>& results
     case_lines.push_back("case: " + r.spec->name + " of " + r.spec->source);
     const auto write_curve = [&](std::string_view integrator, const PointCurve& curve) {
       const bool reference = integrator == kReferenceIntegrator;
-      const Material used =
-          reference ? r.spec->material : with_integrator(r.spec->material, parse_integrator(integrator));
+      const Material used = reference || integrator == kUmatRun
+                                ? r.spec->material
+                                : with_integrator(r.spec->material, parse_integrator(integrator));
       std::vector<std::string> comments = case_lines;
       comments.push_back("material: " + r.spec->material_file + ": " + describe_material(used));
       comments.push_back("integrator: " + std::string(integrator) +

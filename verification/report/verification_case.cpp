@@ -35,7 +35,8 @@ std::vector<double> strain_targets(const toml::table& table, const TableReader& 
   return targets;
 }
 
-std::vector<std::pair<std::string, double>> tolerances(const toml::table& table, const TableReader& reader) {
+std::vector<std::pair<std::string, double>> tolerances(const toml::table& table, const TableReader& reader,
+                                                       bool umat) {
   reader.accept({"tolerance"});
   const toml::table* tolerance = table["tolerance"].as_table();
   if (!tolerance || tolerance->empty())
@@ -44,7 +45,12 @@ std::vector<std::pair<std::string, double>> tolerances(const toml::table& table,
   const TableReader inner(*tolerance, reader.source(), reader.table_name() + ".tolerance");
   for (const auto& [key, node] : *tolerance) {
     const std::string name(key.str());
-    if (name != kReferenceIntegrator) {
+    if (umat != (name == kUmatRun))
+      inner.fail(name,
+                 umat ? "does not apply to a umat material, which runs its own update: tolerance = { umat = "
+                        "... } (no CVODE reference: a UMAT exposes no rate equations)"
+                      : "applies to a umat material only");
+    if (!umat && name != kReferenceIntegrator) {
       try {
         parse_integrator(name);
       } catch (const std::invalid_argument&) {
@@ -67,22 +73,28 @@ VerificationCase read_case(const toml::table& table, const fs::path& file, std::
   const std::string material_file =
       (file.parent_path() / required_string(table, reader, "material")).lexically_normal().string();
   VerificationCase c{name, file.string(), material_file, load_material(material_file), PointTest{}, "none",
-                     {}};
+                     {},   std::nullopt};
   c.test.path = parse_load_path(reader.choice("path", kPathChoices));
   c.test.p_initial = reader.number_or("p_initial", 100e3, point_limits::p_initial(), "Pa");
   c.test.ocr = reader.number_or("ocr", 1.0, point_limits::ocr());
   c.test.strain_targets = strain_targets(table, reader);
   c.test.increments = static_cast<int>(reader.integer_or("increments", 100, 1, point_limits::kMaxIncrements));
   c.closed_form = reader.choice_or("closed_form", "none", kClosedFormNames);
+  const bool umat = std::holds_alternative<UmatModel>(c.material);
+  if (umat && c.closed_form != "none")
+    c.closed_form_material =
+        load_material((file.parent_path() / required_string(table, reader, "closed_form_material"))
+                          .lexically_normal()
+                          .string());
   if (c.closed_form != "none") {
     try {  // the closed form's own checks (model, elasticity, path, OCR range) at its initial state
       const std::vector<double> start = {0.0};
-      closed_form_curve(c.closed_form, c.material, c.test, start);
+      closed_form_curve(c.closed_form, c.closed_form_source(), c.test, start);
     } catch (const std::exception& e) {
       reader.fail("closed_form", e.what());
     }
   }
-  c.tolerances = tolerances(table, reader);
+  c.tolerances = tolerances(table, reader, umat);
   reader.reject_unknown_keys();
   return c;
 }
