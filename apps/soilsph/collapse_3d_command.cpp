@@ -1,12 +1,14 @@
 // `soilsph collapse SCENE.toml` for a scene of space ([scene] dimension = 3): the time loop of
 // sph/solver.h in three dimensions (sph/collapse_3d.h), frames in 3D, summary.json with the
 // deposit measures of the scene's shape and, for an axisymmetric column, the laws of Lube et al.
-// (2004) at its aspect ratio beside them; checkpoints, a clean stop on a signal and `--resume DIR` as
-// for a scene of the plane (collapse_command.cpp).
+// (2004) at its aspect ratio beside them; the histories (boundary forces, gauges, energy),
+// checkpoints, a clean stop on a signal and `--resume DIR` as for a scene of the plane
+// (collapse_command.cpp).
 #include <cmath>
 #include <iostream>
 #include <optional>
 
+#include "apps/soilsph/collapse_preparation.h"
 #include "apps/soilsph/collapse_run.h"
 #include "apps/soilsph/commands.h"
 #include "soilsph/version.h"
@@ -129,9 +131,11 @@ sph::Collapse3 start_collapse(const sph::Scene3& scene, std::optional<sph::Check
 
 void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const fs::path& dir) {
   const sph::ThreadTuner tuner = thread_tuner(o.threads);
+  (void)feasible_estimate(scene);  // refuses a scene it cannot run, before anything is allocated
   std::optional<sph::CheckpointOf<3>> resumed;
   if (!o.resume.empty()) resumed = sph::read_checkpoint<3>(dir / "checkpoint.h5");
   sph::Collapse3 collapse = start_collapse(scene, resumed);
+  std::optional<sph::HistoriesOf<3>> histories = scene_histories<3>(scene, collapse.particles(), collapse.setup());
   std::cout << "soilsph collapse (3D): "
             << (resumed ? "resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s, " : "")
             << collapse.particles().soil_count << " soil and " << collapse.particles().boundary_count()
@@ -159,6 +163,12 @@ void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const f
     sph::write_checkpoint(dir / "checkpoint.h5", p, loop, scene_text);
   };
   if (resumed) control.resume = &resumed->loop;
+  if (histories) {
+    histories->open(dir, resumed ? resumed->loop.stats.end_time : -1.0);
+    control.on_sample = [&histories](const sph::StepSampleOf<3>& s) { (*histories)(s); };
+    control.sample_interval = scene.output.history_interval;
+    control.first_sample = histories->first_sample();
+  }
   sph::FrameBuffers buffers;
   sph::Progress progress(scene.geometry.end_time);
   try {

@@ -52,8 +52,8 @@ void remove_stale_results(const fs::path& dir) {
   std::error_code ignored;
   for (const char* name : {"summary.json", "summary.json.tmp", "checkpoint.h5", "checkpoint.h5.tmp",
                            "frames.xdmf.tmp", "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png",
-                           sph::HistoryWriter::kBoundaryFile, sph::HistoryWriter::kGaugeFile, "boundary_forces.png",
-                           "gauges.png"})
+                           sph::HistoryWriter::kBoundaryFile, sph::HistoryWriter::kGaugeFile,
+                           sph::HistoryWriter::kEnergyFile, "boundary_forces.png", "gauges.png", "energy.png"})
     fs::remove(dir / name, ignored);
   if (fs::is_directory(dir, ignored))
     for (const auto& entry : fs::directory_iterator(dir, ignored)) {
@@ -407,7 +407,7 @@ void run_collapse(const CollapseOptions& o) {
   sph::Collapse collapse = start_collapse(scene, resumed);
   report_gravity_loading(collapse, scene);
   if (resumed) check_resumed_particles(collapse, estimate, dir);
-  std::optional<sph::Histories> histories = scene_histories(scene, collapse.particles(), collapse.setup());
+  std::optional<sph::Histories> histories = scene_histories<2>(scene, collapse.particles(), collapse.setup());
   announce_run(o, scene, collapse, estimate, tuner, resumed, dir);
 
   RunFiles files = open_run_files(dir, scene, resumed, std::move(histories));
