@@ -57,6 +57,7 @@ class FrameBuffers {
     f.density = {p.density.data(), n};
     f.layer = p.layer;
     f.material = p.material;
+    f.id = p.id;
     return f;
   }
 

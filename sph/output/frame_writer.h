@@ -59,6 +59,7 @@ class FrameWriter {
   struct FrameEntry {
     double time;
     std::size_t particles;
+    bool ids;  ///< the frame holds the particles' ids (a frame of a run resumed from an older one may not)
   };
   void write_xdmf() const;
   void write_index() const;

@@ -132,7 +132,7 @@ void update_particle_stress(const Model& model, const Model& fallback, Particles
       // CELENT the particle's spacing: √(m/ρ) in the plane (m per metre of thickness), ∛(m/ρ) in space.
       const double volume = p.mass[i] / p.density[i];
       next = model.update(p.state[i], strain, spin,
-                          UmatCall{.element = static_cast<int>(i) + 1,
+                          UmatCall{.element = static_cast<int>(p.id[i]) + 1,
                                    .time_increment = dt,
                                    .characteristic_length = dim == 2 ? std::sqrt(volume) : std::cbrt(volume),
                                    .coordinates = soilsph::Vec3(p.x[i], p.y[i], z_coordinate(p, i))});
@@ -145,7 +145,7 @@ void update_particle_stress(const Model& model, const Model& fallback, Particles
     }
     p.state[i] = next;
   } catch (const std::exception& e) {
-    failure.record("stress update of soil particle " + std::to_string(i) + ": " + e.what());
+    failure.record("stress update of soil particle " + std::to_string(p.id[i]) + ": " + e.what());
     return;
   }
   const Mat3& sigma = p.state[i].stress;
