@@ -207,6 +207,8 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
     std::iota(id.begin(), id.end(), std::uint64_t{0});
     boundary_kind.assign(boundary, BoundaryKind::NoSlip);
     for_each_wall_array([&](std::vector<double>& a) { a.assign(boundary, 0.0); });
+    if constexpr (dim == 3)  // no further plane behind a ghost until its builder finds one
+      for (auto* sign : {&this->image_sign_x, &this->image_sign_y, &this->image_sign_z}) sign->assign(boundary, 1.0);
     wall_id.assign(boundary, 0);
   }
 
