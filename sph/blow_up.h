@@ -88,7 +88,7 @@ std::string particle_blow_up(const ParticlesOf<dim>& p, std::size_t i, double so
   const bool finite = std::isfinite(dot(x, x) + v2 + p.density[i]);
   const bool fast = v2 > sound_speed * sound_speed, outside = !domain.contains(x);
   std::ostringstream out;
-  out << "blow-up: soil particle " << i << " at " << position_text(p, i);
+  out << "blow-up: soil particle " << p.id[i] << " at " << position_text(p, i);
   if (!finite)
     out << " has a non-finite position, velocity or density";
   else if (fast)

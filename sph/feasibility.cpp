@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
+#include <type_traits>
 #include <sstream>
 
 #include "sph/geometry/polygon.h"
 #include "sph/initial_state.h"
+#include "sph/initial_state_3d.h"
 #include "sph/solver.h"
 
 namespace soilsph::sph {
@@ -27,6 +30,27 @@ std::string wave_speed_keys(const Material& material, const std::string& table =
 std::string particle_count_keys(const Geometry& g) {
   return g.column ? "[scene] particle_spacing, column_width, column_height and floor_length"
                   : "[scene] particle_spacing and the [[regions]] and [[boundaries]]";
+}
+std::string particle_count_keys(const Geometry3& g) {
+  return g.shape == Geometry3::Shape::AxisymmetricColumn
+             ? "[scene] particle_spacing, column_radius, column_height, floor_radius and symmetry"
+             : "[scene] particle_spacing, column_width, column_height, slab_thickness and floor_length";
+}
+
+/// The count-independent part of an estimate: the P-wave speed, the step at rest, the steps to the
+/// end time and the run time at kAssumedThroughput for `soil` + `boundary` particles.
+template <int dim>
+RunEstimate estimate_of(const SolverSetupOf<dim>& setup, double end_time, double soil, double boundary,
+                        double bytes_per_particle) {
+  RunEstimate e;
+  e.soil_particles = soil < 1e18 ? static_cast<std::size_t>(soil) : static_cast<std::size_t>(1e18);
+  e.boundary_particles = boundary < 1e18 ? static_cast<std::size_t>(boundary) : static_cast<std::size_t>(1e18);
+  e.memory_bytes = (soil + boundary) * bytes_per_particle;
+  e.sound_speed = setup.sound_speed;
+  e.time_step = setup.initial_time_step();
+  e.steps = end_time / e.time_step;
+  e.seconds = e.steps * (soil + boundary) / kAssumedThroughput;  // ghosts are paired and mirrored too
+  return e;
 }
 }  // namespace
 
@@ -54,16 +78,27 @@ RunEstimate estimate_run(const Scene& scene) {
         boundary += layers * (std::max(1.0, std::round(norm(w.points[k + 1] - w.points[k]) / dx)) + layers);
     }
   }
-  RunEstimate e;
-  e.soil_particles = soil < 1e18 ? static_cast<std::size_t>(soil) : static_cast<std::size_t>(1e18);
-  e.boundary_particles = boundary < 1e18 ? static_cast<std::size_t>(boundary) : static_cast<std::size_t>(1e18);
-  e.memory_bytes = (soil + boundary) * kBytesPerParticle;
-  const SolverSetup setup = make_solver_setup(scene);
-  e.sound_speed = setup.sound_speed;
-  e.time_step = setup.initial_time_step();
-  e.steps = g.end_time / e.time_step;
-  e.seconds = e.steps * (soil + boundary) / kAssumedThroughput;  // ghosts are paired and mirrored too
-  return e;
+  return estimate_of(make_solver_setup(scene), g.end_time, soil, boundary, kBytesPerParticle);
+}
+
+RunEstimate estimate_run(const Scene3& scene) {
+  const Geometry3& g = scene.geometry;
+  const double dx = g.particle_spacing, cell = dx * dx * dx;
+  // The soil's volume in cells (its nodes fill it one per cell, the top row included), and each
+  // wall's area in cells times its ghost layers, without building either.
+  const double soil = std::visit(
+      [&](const auto& shape) -> double {
+        using Shape = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<Shape, ColumnCylinder>)
+          return std::numbers::pi * shape.radius * shape.radius * (g.azimuth_span_deg / 360.0) *
+                 (shape.height + dx) / cell;
+        else
+          return std::abs(signed_area(shape.outline)) * (shape.z_max - shape.z_min) / cell;
+      },
+      g.soil);
+  double boundary = 0.0;
+  for (const Wall3& w : g.walls) boundary += g.boundary_layers * std::abs(signed_area(w.plane.outline)) / (dx * dx);
+  return estimate_of(make_solver_setup(scene), g.end_time, soil, boundary, kBytesPerParticle3);
 }
 
 template <int dim>
@@ -88,13 +123,14 @@ template RunEstimate measure_run<3>(const SolverSetupOf<3>&, const ParticlesOf<3
 namespace {
 /// Throws the message with the `--set` options it may come from: a refusal must name the option
 /// that made the scene what it is, not only the file.
-[[noreturn]] void refuse(const Scene& scene, const std::string& message) {
+[[noreturn]] void refuse(const SceneSettings& scene, const std::string& message) {
   throw ParameterError(scene.source + ": " + message + overrides_note(scene.overrides));
 }
 }  // namespace
 
-void check_feasible(const Scene& scene, const RunEstimate& e, double memory_available) {
-  const Geometry& g = scene.geometry;
+template <class SceneT>
+void check_feasible(const SceneT& scene, const RunEstimate& e, double memory_available) {
+  const auto& g = scene.geometry;
   std::ostringstream msg;
   if (!(e.time_step > 0.0) || !std::isfinite(e.time_step)) {
     msg << "the time step " << e.time_step
@@ -145,6 +181,9 @@ void check_feasible(const Scene& scene, const RunEstimate& e, double memory_avai
     refuse(scene, msg.str());
   }
 }
+
+template void check_feasible(const Scene&, const RunEstimate&, double);
+template void check_feasible(const Scene3&, const RunEstimate&, double);
 
 double physical_memory() {
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);

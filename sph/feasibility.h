@@ -8,6 +8,7 @@
 #include <string>
 
 #include "sph/scene.h"
+#include "sph/scene_3d.h"
 #include "sph/solver.h"
 
 namespace soilsph::sph {
@@ -26,12 +27,18 @@ struct RunEstimate {
 inline constexpr double kAssumedThroughput = 5e5;
 /// Bytes per particle (soil or ghost): measured 2645 B with 48 neighbour slots (docs/method/sph.md).
 inline constexpr double kBytesPerParticle = 2700;
+/// The same in space, soil and ghosts together: measure_run (`soilsph check`) gave 2.87–2.93 KB on
+/// the shipped axisymmetric column (quarter at r0/Δp = 10 and 20, whole at 20) and the slab
+/// (2026-12-05).
+inline constexpr double kBytesPerParticle3 = 2900;
 
 /// Most frames a run may write: each frame rewrites the indexes of all before it
 /// (sph/output/frame_writer.h), so their cost grows with the square of the count.
 inline constexpr double kMaxFrames = 1e4;
 
 RunEstimate estimate_run(const Scene& scene);
+/// The same for a scene of space, from its shape's volume and its walls' areas in cells.
+RunEstimate estimate_run(const Scene3& scene);
 
 /// The same measured on a scene's particles as built (a 3D scene's, whose counts depend on how its
 /// shapes fill the lattice): the counts; the memory as the particles' arrays (ParticlesOf::bytes()),
@@ -45,7 +52,8 @@ RunEstimate measure_run(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>&
 /// the free-fall speed √(2gH): the weakly compressible scheme needs |v| ≪ c), the memory exceeds
 /// `memory_available` bytes, the estimated run time exceeds [scene] max_run_hours, or the frames
 /// would be more than kMaxFrames.
-void check_feasible(const Scene& scene, const RunEstimate& estimate, double memory_available);
+template <class SceneT>
+void check_feasible(const SceneT& scene, const RunEstimate& estimate, double memory_available);
 
 /// Physical memory of this machine (bytes).
 double physical_memory();

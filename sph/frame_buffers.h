@@ -77,6 +77,7 @@ class FrameBuffers {
       for (std::size_t i = 0; i < n; ++i) statev_[k * n + i] = p.state[i].umat.statev[k];
     f.state_variables = statev_;
     f.state_variable_count = state_variables;
+    f.id = p.id;
     return f;
   }
 

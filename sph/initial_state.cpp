@@ -145,8 +145,8 @@ void copy_wall_attributes(ParticlesOf<dim>& to, const ParticlesOf<dim>& from) {
   to.wall_nx = from.wall_nx, to.wall_ny = from.wall_ny, to.wall_friction = from.wall_friction;
   to.wall_stick = from.wall_stick, to.wall_id = from.wall_id;
   if constexpr (dim == 3)
-    to.wall_nz = from.wall_nz, to.corner_nx = from.corner_nx, to.corner_ny = from.corner_ny,
-    to.corner_nz = from.corner_nz;
+    to.wall_nz = from.wall_nz, to.image_sign_x = from.image_sign_x,
+    to.image_sign_y = from.image_sign_y, to.image_sign_z = from.image_sign_z;
 }
 template void copy_wall_attributes<2>(ParticlesOf<2>&, const ParticlesOf<2>&);
 template void copy_wall_attributes<3>(ParticlesOf<3>&, const ParticlesOf<3>&);

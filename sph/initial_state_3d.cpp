@@ -25,17 +25,29 @@ double friction_coefficient(const Wall3& wall) {
   return wall_friction_coefficient(plane_wall);
 }
 
-/// A free-slip wall other than ghost b's own that b also lies behind, within the ghost layers (a
-/// corner of two symmetry planes, or the floor's edge below one); null if none.
-const Wall3* second_free_slip_wall(const Geometry3& g, const GhostPoint3& b) {
+/// The image signs of ghost b (ThirdAxisArrays<3>::image_sign_x): the product of the reflections
+/// across every free-slip wall other than its own that it also lies behind, within the ghost layers
+/// (a corner of two symmetry planes, the floor's edge below one, the floor's corner below both).
+/// Such a plane must be normal to an axis, so that the reflections commute and their product is a
+/// sign per axis; the shorthands' symmetry planes are. Throws ParameterError for another.
+Vec3 image_signs(const Geometry3& g, const GhostPoint3& b, const std::string& source) {
   const double depth = (g.boundary_layers + 1e-9) * g.particle_spacing;
+  double sign[3] = {1.0, 1.0, 1.0};
   for (std::size_t w = 0; w < g.walls.size(); ++w) {
     const Wall3& wall = g.walls[w];
     if (static_cast<int>(w) == b.wall || wall.kind != WallKind::FreeSlip) continue;
     const double height = wall.plane.height_above(b.position);
-    if (height < -1e-9 * g.particle_spacing && height > -depth) return &wall;
+    if (!(height < -1e-9 * g.particle_spacing && height > -depth)) continue;
+    const Vec3 n = wall.plane.inward;
+    const double c[3] = {std::abs(n.x), std::abs(n.y), std::abs(n.z)};
+    const int axis = static_cast<int>(std::max_element(c, c + 3) - c);
+    if (!(c[axis] > 1.0 - 1e-12))
+      throw ParameterError(source + ": the free-slip wall \"" + wall.label +
+                           "\" meets another wall's ghosts but is not normal to an axis (a corner of two such "
+                           "planes is mirrored only where each is normal to x, y or z)");
+    sign[axis] = -sign[axis];
   }
-  return nullptr;
+  return {sign[0], sign[1], sign[2]};
 }
 }  // namespace
 
@@ -72,10 +84,8 @@ ParticlesOf<3> build_particles_3d(const Scene3& scene) {
     p.wall_friction[k] = friction_coefficient(wall);
     p.wall_stick[k] = wall.kind == WallKind::NoSlip ? 1.0 : 0.0;
     p.wall_id[k] = b.wall;
-    if (const Wall3* other = second_free_slip_wall(g, b)) {
-      const Vec3 c = other->plane.inward;
-      p.corner_nx[k] = c.x, p.corner_ny[k] = c.y, p.corner_nz[k] = c.z;
-    }
+    const Vec3 sign = image_signs(g, b, scene.source);
+    p.image_sign_x[k] = sign.x, p.image_sign_y[k] = sign.y, p.image_sign_z[k] = sign.z;
   }
   std::fill(p.density.begin(), p.density.end(), rho);
   std::fill(p.mass.begin(), p.mass.end(), mass);

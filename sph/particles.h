@@ -10,6 +10,7 @@
 /// code. Generic stages read the third axis under `if constexpr (dim == 3)`.
 #include <array>
 #include <cstdint>
+#include <numeric>
 #include <span>
 #include <vector>
 
@@ -74,10 +75,12 @@ struct ThirdAxisArrays<3> {
   std::vector<double> lxz, lyz, lzx, lzy, lzz;  ///< soil: velocity gradient ∂v^α/∂x^β (1/s)
   std::vector<double> z0;               ///< soil: position at t = 0 (m)
   std::vector<double> wall_nz, wall_vz;  ///< boundary: wall normal and velocity
-  /// Boundary: the unit normal of a second, free-slip plane the ghost also lies behind (where two
-  /// symmetry planes meet, or the floor meets one), across which its image is reflected too (the
-  /// double image of the soil in a corner); 0 where there is none.
-  std::vector<double> corner_nx, corner_ny, corner_nz;
+  /// Boundary: ±1 per axis, the image across the further free-slip planes the ghost also lies
+  /// behind besides its own wall (where two symmetry planes meet, where the floor meets one, and
+  /// where the floor meets both): each such plane is normal to an axis (initial_state_3d.cpp), and
+  /// its reflection flips that axis's component, so their product is a sign per axis; 1 where there
+  /// is none. A vector's component a is multiplied by image_sign[a], a tensor's (a, b) by both.
+  std::vector<double> image_sign_x, image_sign_y, image_sign_z;
 };
 
 template <int dim>
@@ -105,6 +108,10 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
   std::vector<State> state;                ///< full 3×3 stress and hardening state
   std::vector<int> layer;                  ///< horizontal layer id from the bottom (for pictures)
   std::vector<int> material;               ///< index into Scene::materials; each material's particles are contiguous
+  /// The particle's identity for as long as the run lasts, in frames, checkpoints, gauges and
+  /// messages: its index as the scene built it. Today the arrays never reorder, so id[i] == i; a
+  /// distributed run (docs/method/mpi-design.md) moves particles between ranks and indices, never ids.
+  std::vector<std::uint64_t> id;
 
   // Boundary only, indexed by (i − soil_count): the wall each ghost mirrors across, chosen once
   // when the ghosts are built so that the step runs one formula for every kind (stages/boundaries.h).
@@ -139,6 +146,13 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
     else
       return {x[i], y[i], this->z[i]};
   }
+  /// Soil particle i's position at t = 0 (x0, y0[, z0]).
+  Vec<dim> start_position(std::size_t i) const {
+    if constexpr (dim == 2)
+      return {x0[i], y0[i]};
+    else
+      return {x0[i], y0[i], this->z0[i]};
+  }
   Vec<dim> velocity(std::size_t i) const {
     if constexpr (dim == 2)
       return {vx[i], vy[i]};
@@ -172,7 +186,8 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
   /// Bytes held by the arrays.
   std::size_t bytes() const {
     std::size_t b = state.capacity() * sizeof(State) + momentum_source.capacity() * sizeof(Source) +
-                    (layer.capacity() + material.capacity()) * sizeof(int) + boundary_kind.capacity() +
+                    (layer.capacity() + material.capacity()) * sizeof(int) +
+                    id.capacity() * sizeof(std::uint64_t) + boundary_kind.capacity() +
                     wall_id.capacity() * sizeof(int);
     for_each_wall_array([&](const std::vector<double>& a) { b += a.capacity() * sizeof(double); });
     for_each_array([&](const char*, const std::vector<double>& a) { b += a.capacity() * sizeof(double); });
@@ -188,8 +203,12 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
     state.assign(soil, State{});
     layer.assign(soil, 0);
     material.assign(soil, 0);
+    id.resize(soil);
+    std::iota(id.begin(), id.end(), std::uint64_t{0});
     boundary_kind.assign(boundary, BoundaryKind::NoSlip);
     for_each_wall_array([&](std::vector<double>& a) { a.assign(boundary, 0.0); });
+    if constexpr (dim == 3)  // no further plane behind a ghost until its builder finds one
+      for (auto* sign : {&this->image_sign_x, &this->image_sign_y, &this->image_sign_z}) sign->assign(boundary, 1.0);
     wall_id.assign(boundary, 0);
   }
 
@@ -216,7 +235,7 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
   template <class Self, class F>
   static void for_each_wall_array_of(Self& p, F& f) {
     f(p.wall_nx), f(p.wall_ny), f(p.wall_vx), f(p.wall_vy), f(p.wall_friction), f(p.wall_stick);
-    if constexpr (dim == 3) f(p.wall_nz), f(p.wall_vz), f(p.corner_nx), f(p.corner_ny), f(p.corner_nz);
+    if constexpr (dim == 3) f(p.wall_nz), f(p.wall_vz), f(p.image_sign_x), f(p.image_sign_y), f(p.image_sign_z);
   }
 };
 

@@ -44,29 +44,35 @@ DepositFrame read_deposit(const TableReader& t, const toml::table& table, bool g
   return f;
 }
 
-std::vector<Gauge> read_gauges(const toml::table& root, const std::string& source, toml::array& resolved) {
-  std::vector<Gauge> gauges;
+template <int dim>
+std::vector<GaugeOf<dim>> read_gauges(const toml::table& root, const std::string& source, toml::array& resolved) {
+  std::vector<GaugeOf<dim>> gauges;
   for (const auto& [table, label] : tables_of(root, source, "gauges")) {
     const TableReader t(*table, source, label);
-    Gauge g;
+    GaugeOf<dim> g;
     g.name = t.has("name") ? t.word("name") : "gauge_" + std::to_string(gauges.size() + 1);
     t.accept({"position"});
     const toml::node* position = table->get("position");
-    if (!position) t.fail("position", "is missing ([x, y] in m)");
-    g.position = read_vector(*position, source + ": [" + label + "] position", "m");
-    g.kind = t.choice_or("kind", "particle", {"particle", "point"}) == "particle" ? Gauge::Kind::Particle
-                                                                                 : Gauge::Kind::Point;
+    if (!position) t.fail("position", dim == 2 ? "is missing ([x, y] in m)" : "is missing ([x, y, z] in m)");
+    g.position = read_vector_of<dim>(*position, source + ": [" + label + "] position", "m");
+    g.kind = t.choice_or("kind", "particle", {"particle", "point"}) == "particle" ? GaugeKind::Particle
+                                                                                  : GaugeKind::Point;
     t.reject_unknown_keys();
-    for (const Gauge& other : gauges)
+    for (const GaugeOf<dim>& other : gauges)
       if (other.name == g.name)
         t.fail("name", "\"" + g.name + "\" names another gauge too (gauge names label gauges.csv rows)");
     toml::table r = t.resolved();
     r.insert_or_assign("name", g.name);
-    r.insert_or_assign("position", toml::array{g.position.x, g.position.y});
+    if constexpr (dim == 2)
+      r.insert_or_assign("position", toml::array{g.position.x, g.position.y});
+    else
+      r.insert_or_assign("position", toml::array{g.position.x, g.position.y, g.position.z});
     resolved.push_back(std::move(r));
     gauges.push_back(std::move(g));
   }
   return gauges;
 }
+template std::vector<GaugeOf<2>> read_gauges<2>(const toml::table&, const std::string&, toml::array&);
+template std::vector<GaugeOf<3>> read_gauges<3>(const toml::table&, const std::string&, toml::array&);
 
 }  // namespace soilsph::sph

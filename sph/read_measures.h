@@ -23,7 +23,8 @@ struct Geometry;
 DepositFrame read_deposit(const TableReader& t, const toml::table& table, bool given, const Geometry& g,
                           toml::table& resolved);
 
-/// [[gauges]] name, position, kind; `resolved` gets each as read, defaults included.
-std::vector<Gauge> read_gauges(const toml::table& root, const std::string& source, toml::array& resolved);
+/// [[gauges]] name, position ([x, y], in space [x, y, z]), kind; `resolved` gets each as read, defaults included.
+template <int dim = 2>
+std::vector<GaugeOf<dim>> read_gauges(const toml::table& root, const std::string& source, toml::array& resolved);
 
 }  // namespace soilsph::sph

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sph/initial_state_3d.h"
+#include "sph/read_measures.h"
 #include "sph/scene_sections.h"
 
 namespace soilsph::sph {
@@ -225,13 +226,12 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
           source + ": [[" + table +
           "]] describe 2D scenes; a 3D scene is built from [scene] "
           "column_radius (an axisymmetric column) or column_width and slab_thickness (a slab)");
-  for (const char* table : {"deposit", "gauges"})
-    if (root.get(table))
-      throw ParameterError(source + ": [" + std::string(table) +
-                           "] is not read in a 3D scene (the axisymmetric "
-                           "column measures its deposit from its axis)");
-  static constexpr std::string_view kTables[] = {"scene",     "initial",  "material",
-                                                 "materials", "numerics", "output"};
+  if (root.get("deposit"))
+    throw ParameterError(source +
+                         ": [deposit] is not read in a 3D scene (the axisymmetric column measures its deposit "
+                         "from its axis, the slab from its fixed wall)");
+  static constexpr std::string_view kTables[] = {"scene",    "initial", "material", "materials",
+                                                 "numerics", "output",  "gauges"};
   check_tables(root, source, kTables);
   if (scene_dimension(root, source) != 3)
     throw ParameterError(source +
@@ -261,9 +261,12 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
         "stress",
         "= \"gravity-loading\" relaxes the soil with the 2D solver; a 3D scene starts "
         "from \"flat-surface\" (\"local-surface\" is the same for its flat-topped shorthands)");
+  toml::array gauges_resolved;
+  scene.gauges = read_gauges<3>(root, source, gauges_resolved);
   reject_unknown_keys(tables);
   check_unused_materials(tables, used);
   record_settings(tables, extra, scene.resolved);
+  if (!gauges_resolved.empty()) scene.resolved.insert("gauges", std::move(gauges_resolved));
   return scene;
 }
 

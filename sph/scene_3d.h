@@ -101,6 +101,7 @@ struct Geometry3 {
 /// A 3D scene.
 struct Scene3 : SceneSettings {
   Geometry3 geometry;
+  std::vector<GaugeOf<3>> gauges;  ///< [[gauges]], positions [x, y, z]
 };
 
 /// The default floor half-width of an axisymmetric column: twice the runout of Lube et al. (2004)

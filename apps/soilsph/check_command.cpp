@@ -71,6 +71,7 @@ void check_plane(const sph::Scene& scene) {
 }
 
 void check_space(const sph::Scene3& scene) {
+  (void)feasible_estimate(scene);  // the refusals `collapse` would give, before building anything
   const sph::Collapse3 collapse = blaming_overrides(scene.overrides, [&] { return sph::Collapse3(scene); });
   const sph::RunEstimate estimate = sph::measure_run(collapse.setup(), collapse.particles());
   print_costs(scene, scene.geometry.end_time, collapse.particles(), collapse.setup(), estimate);

@@ -1,12 +1,14 @@
 // `soilsph collapse SCENE.toml` for a scene of space ([scene] dimension = 3): the time loop of
 // sph/solver.h in three dimensions (sph/collapse_3d.h), frames in 3D, summary.json with the
 // deposit measures of the scene's shape and, for an axisymmetric column, the laws of Lube et al.
-// (2004) at its aspect ratio beside them; checkpoints, a clean stop on a signal and `--resume DIR` as
-// for a scene of the plane (collapse_command.cpp).
+// (2004) at its aspect ratio beside them; the histories (boundary forces, gauges, energy),
+// checkpoints, a clean stop on a signal and `--resume DIR` as for a scene of the plane
+// (collapse_command.cpp).
 #include <cmath>
 #include <iostream>
 #include <optional>
 
+#include "apps/soilsph/collapse_preparation.h"
 #include "apps/soilsph/collapse_run.h"
 #include "apps/soilsph/commands.h"
 #include "soilsph/version.h"
@@ -120,8 +122,10 @@ void report(const sph::Scene3& scene, const sph::Collapse3& collapse, const sph:
 
 void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const fs::path& dir) {
   const sph::ThreadTuner tuner = thread_tuner(o.threads);
+  (void)feasible_estimate(scene);  // refuses a scene it cannot run, before anything is allocated
   std::optional<sph::CheckpointOf<3>> resumed = resumed_checkpoint<3>(o, dir);
   sph::Collapse3 collapse = start_collapse<sph::Collapse3>(scene, resumed);
+  std::optional<sph::HistoriesOf<3>> histories = scene_histories<3>(scene, collapse.particles(), collapse.setup());
   std::cout << "soilsph collapse (3D): "
             << (resumed ? "resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s, " : "")
             << collapse.particles().soil_count << " soil and " << collapse.particles().boundary_count()
@@ -139,7 +143,8 @@ void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const f
   write_summary();  // says so if killed
 
   const StopSignal signal;
-  const sph::RunControlOf<3> control = run_control<3>(files, signal, resumed);
+  sph::RunControlOf<3> control = run_control<3>(files, signal, resumed);
+  add_histories<3>(control, histories, dir, scene, resumed);
   record.stats = run_with_frames(collapse, scene, tuner, files, control, [&](const std::string& why) {
     record.stop_reason = why;
     write_summary();

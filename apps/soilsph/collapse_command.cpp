@@ -200,16 +200,6 @@ sph::Summary starting_summary(const sph::Scene& scene, const sph::Collapse& coll
   return summary;
 }
 
-/// The histories' samples of the time loop, into the folder; a resumed run's continue its files.
-void add_histories(sph::RunControl& control, std::optional<sph::Histories>& histories, const fs::path& dir,
-                   const sph::Scene& scene, const std::optional<sph::Checkpoint>& resumed) {
-  if (!histories) return;
-  histories->open(dir, resumed ? resumed->loop.stats.end_time : -1.0);
-  control.on_sample = [&histories](const sph::StepSample& s) { (*histories)(s); };
-  control.sample_interval = scene.output.history_interval;
-  control.first_sample = histories->first_sample();
-}
-
 /// The summary at the end: the run's figures and why it stopped.
 void record_end(sph::Summary& summary, const sph::RunStatistics& stats, const sph::Collapse& collapse,
                 const StopSignal& signal, const fs::path& dir) {
@@ -283,7 +273,7 @@ void run_collapse(const CollapseOptions& o) {
   sph::Collapse collapse = start_collapse(scene, resumed);
   report_gravity_loading(collapse, scene);
   if (resumed) check_resumed_particles(collapse, estimate, dir);
-  std::optional<sph::Histories> histories = scene_histories(scene, collapse.particles(), collapse.setup());
+  std::optional<sph::Histories> histories = scene_histories<2>(scene, collapse.particles(), collapse.setup());
   announce_run(o, scene, collapse, estimate, tuner, resumed, dir);
 
   RunFiles files = open_run_files<2>(dir, scene, resumed);
@@ -291,7 +281,7 @@ void run_collapse(const CollapseOptions& o) {
   sph::write_summary_json(dir / "summary.json", summary);
   const StopSignal signal;
   sph::RunControl control = run_control<2>(files, signal, resumed);
-  add_histories(control, histories, dir, scene, resumed);
+  add_histories<2>(control, histories, dir, scene, resumed);
   const sph::RunStatistics stats =
       run_with_frames(collapse, scene, tuner, files, control, [&](const std::string& why) {
         summary.stop_reason = why;

@@ -4,11 +4,14 @@
 
 namespace soilsph::cli {
 
-sph::RunEstimate feasible_estimate(const sph::Scene& scene) {
+template <class SceneT>
+sph::RunEstimate feasible_estimate(const SceneT& scene) {
   const sph::RunEstimate estimate = sph::estimate_run(scene);
   sph::check_feasible(scene, estimate, kUsableMemoryShare * sph::physical_memory());
   return estimate;
 }
+template sph::RunEstimate feasible_estimate(const sph::Scene&);
+template sph::RunEstimate feasible_estimate(const sph::Scene3&);
 
 sph::Particles starting_particles(const sph::Scene& scene) {
   return blaming_overrides(scene.overrides, [&] {
@@ -16,12 +19,6 @@ sph::Particles starting_particles(const sph::Scene& scene) {
     sph::set_geostatic_state(particles, scene);
     return particles;
   });
-}
-
-std::optional<sph::Histories> scene_histories(const sph::Scene& scene, const sph::Particles& particles,
-                                              const sph::SolverSetup& setup) {
-  if (!(scene.output.history_interval > 0.0)) return std::nullopt;
-  return sph::Histories(scene, particles, setup.kernel);
 }
 
 }  // namespace soilsph::cli

@@ -18,7 +18,8 @@ inline constexpr double kUsableMemoryShare = 0.8;
 
 /// The run's cost (sph/feasibility.h), refused past the scene's limits or kUsableMemoryShare of
 /// this machine's memory.
-sph::RunEstimate feasible_estimate(const sph::Scene& scene);
+template <class SceneT>
+sph::RunEstimate feasible_estimate(const SceneT& scene);
 
 /// The soil and wall particles at rest in their geostatic state, as a collapse starts from them
 /// (before any gravity-loading relaxation); a lattice or state the --set options made impossible is
@@ -27,7 +28,12 @@ sph::Particles starting_particles(const sph::Scene& scene);
 
 /// The histories the scene asks for ([output] history_interval > 0) with its gauges placed on
 /// `particles` (refused if one lies outside the soil), before any file is touched; else nothing.
-std::optional<sph::Histories> scene_histories(const sph::Scene& scene, const sph::Particles& particles,
-                                              const sph::SolverSetup& setup);
+template <int dim>
+std::optional<sph::HistoriesOf<dim>> scene_histories(const sph::SceneOf<dim>& scene,
+                                                     const sph::ParticlesOf<dim>& particles,
+                                                     const sph::SolverSetupOf<dim>& setup) {
+  if (!(scene.output.history_interval > 0.0)) return std::nullopt;
+  return sph::HistoriesOf<dim>(scene, particles, setup.kernel);
+}
 
 }  // namespace soilsph::cli

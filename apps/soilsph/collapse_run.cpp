@@ -39,7 +39,8 @@ void remove_stale_results(const fs::path& dir) {
   for (const char* name :
        {"summary.json", "summary.json.tmp", "checkpoint.h5", "checkpoint.h5.tmp", "frames.xdmf.tmp",
         "scene.toml.tmp", "deposit.png", "profiles.png", "velocity.png", sph::HistoryWriter::kBoundaryFile,
-        sph::HistoryWriter::kGaugeFile, "boundary_forces.png", "gauges.png"})
+        sph::HistoryWriter::kGaugeFile, sph::HistoryWriter::kEnergyFile, "boundary_forces.png", "gauges.png",
+        "energy.png"})
     fs::remove(dir / name, ignored);
   if (fs::is_directory(dir, ignored))
     for (const auto& entry : fs::directory_iterator(dir, ignored)) {

@@ -2,8 +2,8 @@
 /// @file
 /// What `soilsph collapse` shares between scenes of the plane (collapse_command.cpp) and of space
 /// (collapse_3d_command.cpp): its options, the thread tuner, the run's folder and its clean start, the
-/// checkpoint a resumed run continues, what the time loop reports back, the run with its frames and
-/// progress, and how a run stopped by a signal ends. Each path of the command is a sequence of these
+/// checkpoint a resumed run continues, what the time loop reports back, its histories, the run with
+/// its frames and progress, and how a run stopped by a signal ends. Each path of the command is a sequence of these
 /// steps and its own (collapse_run.cpp for the shared steps that do not depend on the dimension).
 #include <exception>
 #include <filesystem>
@@ -15,6 +15,7 @@
 #include "sph/frame_buffers.h"
 #include "sph/output/checkpoint.h"
 #include "sph/output/frame_writer.h"
+#include "sph/output/histories.h"
 #include "sph/output/progress.h"
 #include "sph/scene_3d.h"
 #include "sph/solver.h"
@@ -84,6 +85,19 @@ sph::RunControlOf<dim> run_control(const RunFiles& files, const StopSignal& sign
   };
   if (resumed) control.resume = &resumed->loop;
   return control;
+}
+
+/// The histories' samples of the time loop (boundary forces, gauges, energy), into the folder; a
+/// resumed run's continue its files.
+template <int dim>
+void add_histories(sph::RunControlOf<dim>& control, std::optional<sph::HistoriesOf<dim>>& histories,
+                   const std::filesystem::path& dir, const sph::SceneOf<dim>& scene,
+                   const std::optional<sph::CheckpointOf<dim>>& resumed) {
+  if (!histories) return;
+  histories->open(dir, resumed ? resumed->loop.stats.end_time : -1.0);
+  control.on_sample = [&histories](const sph::StepSampleOf<dim>& s) { (*histories)(s); };
+  control.sample_interval = scene.output.history_interval;
+  control.first_sample = histories->first_sample();
 }
 
 /// Runs the collapse, writing the frames of `scene.output.fields` and progress as it goes; a run that

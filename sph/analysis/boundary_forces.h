@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// The resultant force the soil exerts on each boundary (N per metre of thickness, plane strain).
+/// The resultant force the soil exerts on each boundary: N per metre of thickness in the plane (plane
+/// strain), N in space.
 ///
 /// A wall acts on the soil only through its ghost particles, by the pair terms of eq 12 (stress,
 /// artificial viscosity and artificial stress). The force on soil particle i from the ghosts of wall
@@ -12,15 +13,16 @@
 /// v or the pairs.
 #include <vector>
 
-#include "sph/geometry/vec2.h"
+#include "sph/geometry/vec3.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
 #include "sph/stages/momentum.h"
 
 namespace soilsph::sph {
 
-/// F_w for every wall index w < walls (ghosts carry their wall's index, Particles::wall_id).
-std::vector<Vec2> boundary_forces(const Particles& p, const NeighbourList& nl, const MomentumParams& m,
-                                  std::size_t walls);
+/// F_w for every wall index w < walls (ghosts carry their wall's index, ParticlesOf::wall_id).
+template <int dim>
+std::vector<Vec<dim>> boundary_forces(const ParticlesOf<dim>& p, const PairList<dim>& nl,
+                                      const MomentumParamsOf<dim>& m, std::size_t walls);
 
 }  // namespace soilsph::sph

@@ -34,20 +34,27 @@ std::vector<std::pair<const toml::table*, std::string>> tables_of(const toml::ta
   return tables;
 }
 
-Vec2 read_vector(const toml::node& node, const std::string& where, std::string_view unit) {
+template <int dim>
+Vec<dim> read_vector_of(const toml::node& node, const std::string& where, std::string_view unit) {
   const toml::array* a = node.as_array();
-  const std::string expected = " must be [x, y], two finite numbers (" + std::string(unit) + ", |value| <= " +
+  const std::string expected = std::string(dim == 2 ? " must be [x, y], two" : " must be [x, y, z], three") +
+                               " finite numbers (" + std::string(unit) + ", |value| <= " +
                                format_number(kLargestCoordinate) + ")";
-  if (!a || a->size() != 2) throw ParameterError(where + expected);
-  Vec2 v;
-  for (int c = 0; c < 2; ++c) {
-    const toml::node& e = (*a)[static_cast<std::size_t>(c)];
+  if (!a || a->size() != dim) throw ParameterError(where + expected);
+  double c[dim];
+  for (int k = 0; k < dim; ++k) {
+    const toml::node& e = (*a)[static_cast<std::size_t>(k)];
     const std::optional<double> x = e.value<double>();
     if (!x || e.is_boolean() || !std::isfinite(*x) || std::abs(*x) > kLargestCoordinate) throw ParameterError(where + expected);
-    (c == 0 ? v.x : v.y) = *x;
+    c[k] = *x;
   }
-  return v;
+  if constexpr (dim == 2)
+    return {c[0], c[1]};
+  else
+    return {c[0], c[1], c[2]};
 }
+template Vec2 read_vector_of<2>(const toml::node&, const std::string&, std::string_view);
+template Vec3 read_vector_of<3>(const toml::node&, const std::string&, std::string_view);
 
 namespace {
 

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "sph/geometry/layout.h"
+#include "sph/geometry/vec3.h"
 
 namespace soilsph::sph {
 
@@ -29,8 +30,13 @@ toml::array read_boundaries(const toml::table& root, const std::string& source, 
 std::vector<std::pair<const toml::table*, std::string>> tables_of(const toml::table& root, const std::string& source,
                                                                   std::string_view name);
 
-/// An [x, y] pair of finite numbers (m or m/s) at `where`; throws ParameterError otherwise.
-Vec2 read_vector(const toml::node& node, const std::string& where, std::string_view unit);
+/// An [x, y] pair (an [x, y, z] triple in space) of finite numbers (m or m/s) at `where`; throws
+/// ParameterError otherwise.
+template <int dim>
+Vec<dim> read_vector_of(const toml::node& node, const std::string& where, std::string_view unit);
+inline Vec2 read_vector(const toml::node& node, const std::string& where, std::string_view unit) {
+  return read_vector_of<2>(node, where, unit);
+}
 
 /// The largest coordinate magnitude accepted (m): beyond it a scene is a typo.
 inline constexpr double kLargestCoordinate = 1e4;

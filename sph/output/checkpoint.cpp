@@ -104,6 +104,7 @@ void write_checkpoint(const std::filesystem::path& file, const ParticlesOf<dim>&
                           where);
     }
     hdf5::write_dataset(h5, "layer", H5T_STD_I32LE, H5T_NATIVE_INT, soil, 1, p.layer.data(), where);
+    hdf5::write_dataset(h5, "id", H5T_STD_U64LE, H5T_NATIVE_UINT64, soil, 1, p.id.data(), where);
     hdf5::write_dataset(h5, "boundary_kind", H5T_STD_U8LE, H5T_NATIVE_UINT8, p.boundary_kind.size(), 1,
                         p.boundary_kind.data(), where);
     hdf5::write_doubles(h5, "search_x", loop.search_x, where);
@@ -182,6 +183,8 @@ CheckpointOf<dim> read_checkpoint(const std::filesystem::path& file) {
     for (std::size_t i = 0; i < soil; ++i) unpack_umat(&umat[kUmatValues * i], c.particles.state[i].umat);
   }
   hdf5::read_dataset(h5, "layer", H5T_NATIVE_INT, soil, c.particles.layer.data(), where);
+  if (H5Lexists(h5, "id", H5P_DEFAULT) > 0)  // else the ids as built (a checkpoint written before ids)
+    hdf5::read_dataset(h5, "id", H5T_NATIVE_UINT64, soil, c.particles.id.data(), where);
   hdf5::read_dataset(h5, "boundary_kind", H5T_NATIVE_UINT8, c.particles.boundary_kind.size(),
                      c.particles.boundary_kind.data(), where);
   c.loop.search_x.resize(c.particles.size());

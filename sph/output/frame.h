@@ -64,6 +64,7 @@ struct Frame {
   std::span<const double> density;             ///< kg/m^3
   std::span<const int> layer;                  ///< horizontal layer id (0,1,2,... from the bottom)
   std::span<const int> material;               ///< index of the particle's material (summary.json "materials")
+  std::span<const std::uint64_t> id{};         ///< the particles' global ids (ParticlesOf::id); written if given
   int dimension = 2;                           ///< 2: positions (x, y, 0); 3: (x, y, z) and the spans below
   std::span<const double> z{}, vz{};           ///< 3D only: m, m/s
   std::span<const double> sxz{}, syz{};        ///< 3D only: Pa, tension-positive

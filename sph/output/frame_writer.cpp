@@ -170,6 +170,7 @@ FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet f
     double time = 0.0;
     std::size_t particles = 0;
     int state_variables = 0;
+    bool ids = false;
     {
       const Handle access(hdf5::unlocked_file_access(), H5Pclose, "create a file-access property list");
       const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access), H5Fclose, "open " + path.string());
@@ -180,13 +181,14 @@ FrameWriter FrameWriter::continuing(const std::filesystem::path& dir, FieldSet f
       std::array<hsize_t, 2> dims{};
       H5Sget_simple_extent_dims(space, dims.data(), nullptr);
       particles = static_cast<std::size_t>(dims[0]);
+      ids = H5Lexists(file, "id", H5P_DEFAULT) > 0;
     }
     if (time > last_kept) {  // written after the checkpoint: this frame and every later one go
       for (std::size_t later = index; std::filesystem::remove(writer.frame_path(later)); ++later) {
       }
       break;
     }
-    writer.frames_.push_back({time, particles, state_variables});
+    writer.frames_.push_back({time, particles, state_variables, ids});
   }
   writer.write_index();
   writer.write_xdmf();
@@ -254,16 +256,19 @@ void FrameWriter::write(const Frame& frame) {
                                 std::to_string(frame.state_variables.size()) + " state-variable values for " +
                                 std::to_string(statev_count) + " variables of " + std::to_string(n) +
                                 " particles");
+  const bool ids = !frame.id.empty();
+  if (ids) check_size(frame.id.size());
   const std::filesystem::path path = frame_path(frames_.size());
   const std::string where = path.string() + ":/";
   // Room first, so that a full disk is one clear message rather than HDF5's failure half-way.
-  std::uintmax_t values = 3 * n + statev_count * n;
+  std::uintmax_t values = (ids ? 4 : 3) * n + statev_count * n;
   for (const XdmfField& f : kFields) values += fields_.contains(f.field) && written_in(f, dimension_) ? f.components * n : 0;
   ensure_room(path, 8 * values + kFileOverhead);
   write_file_atomically(path, [&](hid_t file) {
     write_double_attribute(file, "time", frame.time);
     const std::vector<double> position = xyz(frame.x, frame.y, frame.z);
     write_dataset(file, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, position.data(), where);
+    if (ids) write_dataset(file, "id", H5T_STD_U64LE, H5T_NATIVE_UINT64, n, 1, frame.id.data(), where);
     if (has(Field::velocity)) {
       const std::vector<double> velocity = xyz(frame.vx, frame.vy, frame.vz);
       write_dataset(file, "velocity", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, n, 3, velocity.data(), where);
@@ -307,7 +312,7 @@ void FrameWriter::write(const Frame& frame) {
     });
   }
   // The frame's file is complete on disk before the index and the XDMF point at it.
-  frames_.push_back({frame.time, n, static_cast<int>(statev_count)});
+  frames_.push_back({frame.time, n, static_cast<int>(statev_count), ids});
   write_index();
   write_xdmf();
 }
@@ -339,6 +344,11 @@ void FrameWriter::write_xdmf() const {
         << "        <Geometry GeometryType=\"XYZ\">\n";
     data_item("position", "Float", 8, 3);
     out << "        </Geometry>\n";
+    if (frames_[index].ids) {
+      out << "        <Attribute Name=\"id\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+      data_item("id", "UInt", 8, 1);
+      out << "        </Attribute>\n";
+    }
     for (const XdmfField& field : kFields) {
       if (!fields_.contains(field.field) || !written_in(field, dimension_)) continue;
       out << "        <Attribute Name=\"" << field.name << "\" AttributeType=\"" << field.attribute_type

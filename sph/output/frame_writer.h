@@ -60,6 +60,7 @@ class FrameWriter {
     double time;
     std::size_t particles;
     int state_variables = 0;  ///< statev_1 … of the frame (Frame::state_variable_count)
+    bool ids = false;  ///< the frame holds the particles' ids (a frame of a run resumed from an older one may not)
   };
   void write_xdmf() const;
   void write_index() const;

@@ -150,10 +150,9 @@ void mirror_stress_onto_ghost(ParticlesOf<dim>& p, const PairList<dim>& nl, std:
     const double delta = -dot(body, n) * dot(offset, n) / sum_w;  // Δ above
     const Eigen::Vector3d nn{n.x, n.y, n.z};
     Eigen::Matrix3d ghost = ghost_stress(mean, n, shear.traction) + delta * nn * nn.transpose();
-    if (const Eigen::Vector3d c{p.corner_nx[g], p.corner_ny[g], p.corner_nz[g]}; c.squaredNorm() > 0.0) {
-      const Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity() - 2.0 * c * c.transpose();
-      ghost = reflection * ghost * reflection;  // the image across the second, free-slip plane
-    }
+    // The image across the further free-slip planes the ghost lies behind: σ_ab s_a s_b.
+    const Eigen::Vector3d sign{p.image_sign_x[g], p.image_sign_y[g], p.image_sign_z[g]};
+    ghost = ghost.cwiseProduct(sign * sign.transpose());
     p.sxx[b] = ghost(0, 0), p.syy[b] = ghost(1, 1), p.szz[b] = ghost(2, 2);
     p.sxy[b] = ghost(0, 1), p.sxz[b] = ghost(0, 2), p.syz[b] = ghost(1, 2);
   }
@@ -185,12 +184,11 @@ void mirror_velocity_onto_ghost(const ParticlesOf<dim>& p, const PairList<dim>& 
     v[0][b] = v_x - 2.0 * dn * nx - 2.0 * s * dt * tx;
     v[1][b] = v_y - 2.0 * dn * ny - 2.0 * s * dt * ty;
   } else {
-    Vec3 ghost = ghost_velocity({sum[0] / sum_w, sum[1] / sum_w, sum[2] / sum_w},
+    const Vec3 ghost = ghost_velocity({sum[0] / sum_w, sum[1] / sum_w, sum[2] / sum_w},
                                 {p.wall_vx[g], p.wall_vy[g], p.wall_vz[g]}, {p.wall_nx[g], p.wall_ny[g], p.wall_nz[g]},
                                 s);
-    if (const Vec3 c{p.corner_nx[g], p.corner_ny[g], p.corner_nz[g]}; dot(c, c) > 0.0)
-      ghost = mirror_point(ghost, {}, c);  // the image across the second, free-slip plane
-    v[0][b] = ghost.x, v[1][b] = ghost.y, v[2][b] = ghost.z;
+    // The image across the further free-slip planes the ghost lies behind: v_a s_a.
+    v[0][b] = p.image_sign_x[g] * ghost.x, v[1][b] = p.image_sign_y[g] * ghost.y, v[2][b] = p.image_sign_z[g] * ghost.z;
   }
 }
 

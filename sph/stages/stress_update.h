@@ -117,13 +117,13 @@ double z_coordinate(const ParticlesOf<dim>& p, std::size_t i) {
     return p.z[i];
 }
 
-/// Where and when a UMAT plug-in is called for soil particle i over dt: NOEL the particle (from 1),
+/// Where and when a UMAT plug-in is called for soil particle i over dt: NOEL the particle's id + 1,
 /// DTIME the step, CELENT the particle's spacing: √(m/ρ) in the plane (m per metre of thickness),
 /// ∛(m/ρ) in space; COORDS its position.
 template <int dim>
 UmatCall umat_call_at(const ParticlesOf<dim>& p, std::size_t i, double dt) {
   const double volume = p.mass[i] / p.density[i];
-  return {.element = static_cast<int>(i) + 1,
+  return {.element = static_cast<int>(p.id[i]) + 1,
           .time_increment = dt,
           .characteristic_length = dim == 2 ? std::sqrt(volume) : std::cbrt(volume),
           .coordinates = soilsph::Vec3(p.x[i], p.y[i], z_coordinate(p, i))};
@@ -150,7 +150,7 @@ void update_particle_stress(const Model& model, const Model& fallback, Particles
     }
     p.state[i] = next;
   } catch (const std::exception& e) {
-    failure.record("stress update of soil particle " + std::to_string(i) + ": " + e.what());
+    failure.record("stress update of soil particle " + std::to_string(p.id[i]) + ": " + e.what());
     return;
   }
   const Mat3& sigma = p.state[i].stress;

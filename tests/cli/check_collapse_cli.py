@@ -34,14 +34,19 @@ def expect(condition, message):
 
 
 # Refusals: an unknown key, an impossible time step, a run estimated too long, imported particles
-# closer than the spacing, a region left empty, a material too soft for its weight.
+# closer than the spacing, a region left empty, a material too soft for its weight; in 3D too.
 BAD = [("collapse-dp", ["--set", "scene.column_widht=0.05"]),
        ("collapse-dp", ["--set", "numerics.cfl=5e-324"]),
        ("collapse-dp", ["--set", "scene.floor_length=999.9", "--set", "scene.particle_spacing=0.004",
                         "--set", "scene.max_run_hours=0.002"]),
        ("imported-column", ["--set", "scene.particle_spacing=0.01"]),
        ("slope", ["--set", "scene.particle_spacing=4.0"]),
-       ("two-material-column", ["--set", "materials.clay.density=2e303"])]
+       ("two-material-column", ["--set", "materials.clay.density=2e303"]),
+       # The same refusals in space: memory, run time, time step, a soil too soft for its weight.
+       ("axisymmetric-column", ["--set", "scene.particle_spacing=0.0002"]),
+       ("axisymmetric-column", ["--set", "scene.max_run_hours=0.0001"]),
+       ("slab-3d", ["--set", "numerics.cfl=5e-324"]),
+       ("axisymmetric-column", ["--set", "material.young_modulus=1"])]
 with tempfile.TemporaryDirectory() as temp:
     temp = pathlib.Path(temp)
     for scene, args in BAD:

@@ -65,9 +65,9 @@ std::string text_of(const fs::path& file) {
 }
 
 /// The datasets of a frame of a 2D run, and of a 3D run (frame_writer.h).
-const std::vector<std::string> kPlaneSets{"position", "velocity", "sxx", "syy", "szz", "sxy", "p", "q", "density"};
-const std::vector<std::string> kSpaceSets{"position", "velocity", "sxx", "syy", "szz", "sxy",
-                                          "sxz",      "syz",      "p",   "q",   "density"};
+const std::vector<std::string> kPlaneSets{"position", "id", "velocity", "sxx", "syy", "szz", "sxy", "p", "q", "density"};
+const std::vector<std::string> kSpaceSets{"position", "id",  "velocity", "sxx", "syy", "szz",
+                                          "sxy",      "sxz", "syz",      "p",   "q",   "density"};
 
 /// Every dataset `sets` of every frame of DIR/frames.h5, read back (throws if any cannot be);
 /// returns the last frame's datasets by name and the number of frames.

@@ -47,7 +47,7 @@ std::vector<Sample> sampled_run(const Scene& scene) {
       sample.weight_less_inertia.x += p.mass[i] * (s.momentum.gravity.x - p.ax[i]);
       sample.weight_less_inertia.y += p.mass[i] * (s.momentum.gravity.y - p.ay[i]);
     }
-    sample.gauges = gauges.read(p, s.v_next[0], s.v_next[1]);
+    sample.gauges = gauges.read(p, s.v_next);
     samples.push_back(std::move(sample));
   };
   collapse.run(ThreadTuner(1, false), [](const Particles&, double) {}, [](double, std::size_t) {}, control);
@@ -157,19 +157,19 @@ TEST_CASE("a resumed run's histories keep the rows before its checkpoint and dro
   const soilsph::testing::TempDir scratch("soilsph-histories");
   const std::filesystem::path dir = scratch / "run";
   {
-    HistoryWriter w(dir, {"floor", "wall"}, {"g"});
+    HistoryWriter w(dir, {"floor", "wall"}, {"g"}, "per metre");
     for (const double t : {0.0, 0.1, 0.2}) {
       const Vec2 forces[] = {{1.0, -t}, {2.0, t}};
       const GaugeReading readings[] = {{{t, 0.0}, {}, {}, 1.0, 2.0}};
-      w.write(t, forces, readings);
+      w.write(t, forces, readings, {.kinetic = t, .potential = -2.0 * t});
     }
   }
   std::ofstream(dir / HistoryWriter::kBoundaryFile, std::ios::app) << "0.3,floor,1.";  // killed mid-row
-  HistoryWriter resumed = HistoryWriter::continuing(dir, {"floor", "wall"}, {"g"}, 0.15);
+  HistoryWriter resumed = HistoryWriter::continuing(dir, {"floor", "wall"}, {"g"}, "per metre", 0.15);
   CHECK(resumed.last_sample() == 0.1);
   const Vec2 forces[] = {{3.0, 3.0}, {4.0, 4.0}};
   const GaugeReading readings[] = {{{0.0, 0.0}, {}, {}, 5.0, 6.0}};
-  resumed.write(0.15, forces, readings);
+  resumed.write(0.15, forces, readings, {.kinetic = 1.0, .potential = 0.5});
   const auto data_rows = [&](const char* name) {
     std::ifstream in(dir / name);
     std::vector<std::string> rows;
@@ -185,5 +185,10 @@ TEST_CASE("a resumed run's histories keep the rows before its checkpoint and dro
   const std::vector<std::string> gauge_rows = data_rows(HistoryWriter::kGaugeFile);
   REQUIRE(gauge_rows.size() == 4);
   CHECK(gauge_rows[3] == "0.15,g,0,0,0,0,0,0,5,6");
+  const std::vector<std::string> energy_rows = data_rows(HistoryWriter::kEnergyFile);
+  REQUIRE(energy_rows.size() == 4);
+  CHECK(energy_rows[0] == "time_s,kinetic_J_per_m,potential_J_per_m,mechanical_J_per_m");
+  CHECK(energy_rows[2] == "0.1,0.1,-0.2,-0.1");
+  CHECK(energy_rows[3] == "0.15,1,0.5,1.5");
   std::filesystem::remove_all(dir);
 }

@@ -397,10 +397,10 @@ TEST_CASE("a 3D checkpoint's ghosts get their walls' normals, friction and ids f
   CHECK(restored.wall_ny == built.wall_ny);
   CHECK(restored.wall_nz == built.wall_nz);
   // The quarter column's ghosts where the symmetry planes meet each other or the floor lie behind two.
-  CHECK(std::any_of(built.corner_nx.begin(), built.corner_nx.end(), [](double n) { return n != 0.0; }));
-  CHECK(restored.corner_nx == built.corner_nx);
-  CHECK(restored.corner_ny == built.corner_ny);
-  CHECK(restored.corner_nz == built.corner_nz);
+  CHECK(std::any_of(built.image_sign_x.begin(), built.image_sign_x.end(), [](double s) { return s == -1.0; }));
+  CHECK(restored.image_sign_x == built.image_sign_x);
+  CHECK(restored.image_sign_y == built.image_sign_y);
+  CHECK(restored.image_sign_z == built.image_sign_z);
   CHECK(restored.wall_friction == built.wall_friction);
   CHECK(restored.wall_id == built.wall_id);
   ParticlesOf<3> fewer;

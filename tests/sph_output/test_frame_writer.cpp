@@ -281,6 +281,32 @@ TEST_CASE("only the selected fields are written to frames.h5 and listed in frame
   }
 }
 
+TEST_CASE("the particles' ids go into every frame that has them, whatever the fields, and into the index",
+          "[frame_writer]") {
+  const auto dir = fresh_directory("ids");
+  const SyntheticParticles a(4, 0.0), b(4, 0.25);
+  // Ids that are not the indices: a frame records who each particle is, not where it sits.
+  const std::vector<std::uint64_t> ids{7, 3, 11, 0};
+  Frame with_ids = b.frame();
+  with_ids.id = ids;
+  FrameWriter writer(dir, FieldSet().insert(Field::p));
+  writer.write(a.frame());  // without ids (a frame written before a resume from an older run)
+  writer.write(with_ids);
+  const H5File file(dir / "frames.h5");
+  std::vector<hsize_t> dims;
+  CHECK(group_members(file.id, "/frame_000000") == std::set<std::string>{"position", "p"});
+  CHECK(read_dataset<std::uint64_t>(file.id, "/frame_000001/id", H5T_NATIVE_UINT64, dims) == ids);
+  const std::string xdmf = read_text(writer.xdmf_path());
+  CHECK(xdmf.find("frames.h5:/frame_000000/id") == std::string::npos);
+  CHECK(xdmf.find(R"(<Attribute Name="id" AttributeType="Scalar" Center="Node">)") != std::string::npos);
+  CHECK(xdmf.find(R"(NumberType="UInt" Precision="8" Format="HDF">frames.h5:/frame_000001/id<)") !=
+        std::string::npos);
+  // A frame whose ids do not match its particle count is refused.
+  with_ids.id = std::span(ids).first(3);
+  CHECK_THROWS_AS(writer.write(with_ids), std::invalid_argument);
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("a frame missing a selected field is rejected", "[frame_writer]") {
   const auto dir = fresh_directory("missing_field");
   SyntheticParticles s(6, 0.0);
