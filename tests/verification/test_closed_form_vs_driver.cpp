@@ -175,4 +175,11 @@ TEST_CASE("a closed form refuses a model or path it does not describe", "[closed
                                  driven));
   CHECK_THROWS(closed_form_curve("mcc-oedometer", test::table1_cam_clay(Kind::Constant), test, driven));
   CHECK_THROWS(closed_form_curve("no-such-form", test::table1_drucker_prager(), test, driven));
+  // The Cam-clay closed forms harden with the initial specific volume only.
+  ModifiedCamClay::Params current = test::table1_cam_clay_params(Kind::PressureDependent);
+  current.hardening_volume = HardeningVolume::Current;
+  test.path = LoadPath::Isotropic;
+  CHECK_NOTHROW(closed_form_curve("mcc-isotropic", test::table1_cam_clay(Kind::PressureDependent), test, driven));
+  CHECK_THROWS_WITH(closed_form_curve("mcc-isotropic", ModifiedCamClay(current), test, driven),
+                    Catch::Matchers::Contains("hardening_volume = \"current\" has no closed form"));
 }

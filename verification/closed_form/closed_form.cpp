@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "verification/closed_form/cam_clay_compression.h"
 #include "verification/closed_form/cam_clay_drained.h"
@@ -22,6 +23,11 @@ template <class Model>
 const Model& model_of(const Material& material, std::string_view name) {
   const Model* model = std::get_if<Model>(&material);
   require(model != nullptr, name, "applies to " + std::string(Model::kName) + " only");
+  if constexpr (std::is_same_v<Model, ModifiedCamClay>)
+    // The Cam-clay closed forms integrate the hardening with the initial specific volume (eq 27).
+    require(!model->hardens_with_current_volume(), name,
+            "integrates with the initial specific volume; hardening_volume = \"current\" has no closed form "
+            "here (compare it against cvode)");
   return *model;
 }
 
