@@ -287,18 +287,16 @@ test::OgsCamClayScheme ogs_original_scheme() {
           .pc_min = 0.5e-8 * kOgsPc0};
 }
 
+/// triaxtest: the same clay with a constant E, an ambient pressure of 1 kPa and the current,
+/// exponential specific volume.
 test::OgsCamClayScheme ogs_constant_e_scheme() {
-  return {.M = 1.2,
-          .lambda = kOgsLambda,
-          .kappa = kOgsKappa,
-          .nu = 0.3,
-          .v0 = kOgsTriaxialV0,
-          .pc0 = kOgsPc0,
-          .ambient_pressure = 1e3,
-          .pc_min = 1e-15 * kOgsPc0,
-          .young_modulus = 64.9345e6,
-          .current_volume = true,
-          .exponential_volume = true};
+  test::OgsCamClayScheme scheme = ogs_original_scheme();
+  scheme.ambient_pressure = 1e3;
+  scheme.pc_min = 1e-15 * kOgsPc0;
+  scheme.young_modulus = 64.9345e6;
+  scheme.current_volume = true;
+  scheme.exponential_volume = true;
+  return scheme;
 }
 
 /// The scheme over the first `steps` of OpenGeoSys's grid, each step split into `parts`.
