@@ -17,6 +17,7 @@ reads DIR/frames.h5 and DIR/summary.json (docs/reference/output-formats.md) and 
   DIR/boundary_forces.png                 the force on each boundary over time (boundary_forces.csv)
   DIR/gauges.png                          p, q, speed and displacement of each gauge over time
                                           (gauges.csv)
+  DIR/energy.png                          the soil's kinetic, potential and mechanical energy (energy.csv)
 Axes are in cm with equal aspect and a 2 cm x 2 cm background grid as in the paper. The walls are
 drawn from summary.json's "boundaries" where they stand at each picture's time (a removed wall
 disappears, a moving one moves); the extent is that of the particles of the frames drawn.
@@ -36,6 +37,7 @@ A 3D run (summary.json's inputs.scene.dimension = 3) gets instead, with up again
                                           initial column and final deposit (and each --compare run's),
                                           with Lube et al. (2004)'s r_inf and H_inf for the column's
                                           aspect ratio (inputs.scene column_radius, column_height)
+and boundary_forces.png, gauges.png and energy.png as above, with z components and whole forces.
 """
 import argparse
 import json
@@ -316,29 +318,48 @@ def read_history(path):
     return {name: {key: np.array(v) for key, v in columns.items()} for name, columns in series.items()}
 
 
+def read_columns(path):
+    """A history CSV without a name column (energy.csv) as {column: array}; a torn last row is skipped."""
+    with open(path) as f:
+        lines = [line.rstrip("\n") for line in f if line.strip() and not line.startswith("#")]
+    header, rows = lines[0].split(","), [line.split(",") for line in lines[1:]]
+    rows = [r for r in rows if len(r) == len(header)]
+    return {key: np.array([float(r[k]) for r in rows]) for k, key in enumerate(header)}
+
+
 def plot_histories(run):
-    forces_file, gauges_file = run.dir / "boundary_forces.csv", run.dir / "gauges.csv"
+    """boundary_forces.png, gauges.png and energy.png from the run's history CSVs, in 2D and 3D (whose
+    columns add z and whose forces and energies are whole, not per metre)."""
+    axes_names = ("x", "y") if run.dimension == 2 else ("x", "y", "z")
+    per = "_per_m" if run.dimension == 2 else ""
+    unit = "N/m" if run.dimension == 2 else "N"
+    forces_file, gauges_file, energy_file = (run.dir / name for name in
+                                             ("boundary_forces.csv", "gauges.csv", "energy.csv"))
     if forces_file.is_file():
         series = read_history(forces_file)
-        fig, axes = plt.subplots(2, 1, figsize=(8, 6), dpi=150, sharex=True, constrained_layout=True)
+        fig, axes = plt.subplots(len(axes_names), 1, figsize=(8, 2 + 2 * len(axes_names)), dpi=150, sharex=True,
+                                 constrained_layout=True)
         for name, s in series.items():
-            axes[0].plot(s["time_s"], s["fx_N_per_m"], label=name)
-            axes[1].plot(s["time_s"], s["fy_N_per_m"], label=name)
-        axes[0].set_ylabel("$F_x$ (N/m)")
-        axes[1].set_ylabel("$F_y$ (N/m)")
-        axes[1].set_xlabel("t (s)")
+            for ax, a in zip(axes, axes_names):
+                ax.plot(s["time_s"], s[f"f{a}_N{per}"], label=name)
+        for ax, a in zip(axes, axes_names):
+            ax.set_ylabel(f"$F_{a}$ ({unit})")
+        axes[-1].set_xlabel("t (s)")
         axes[0].legend(fontsize=8)
-        axes[0].set_title(f"{run.label}: force of the soil on each boundary (per metre of thickness)")
+        axes[0].set_title(f"{run.label}: force of the soil on each boundary"
+                          + (" (per metre of thickness)" if run.dimension == 2 else ""))
         fig.savefig(run.dir / "boundary_forces.png")
         plt.close(fig)
     if gauges_file.is_file():
         series = read_history(gauges_file)
         fig, axes = plt.subplots(2, 2, figsize=(11, 6.5), dpi=150, sharex=True, constrained_layout=True)
         for name, s in series.items():
+            speed = np.sqrt(sum(s[f"v{a}_m_per_s"] ** 2 for a in axes_names))
+            displacement = np.sqrt(sum(s[f"u{a}_m"] ** 2 for a in axes_names))
             axes[0, 0].plot(s["time_s"], s["p_Pa"] / 1e3, label=name)
             axes[0, 1].plot(s["time_s"], s["q_Pa"] / 1e3, label=name)
-            axes[1, 0].plot(s["time_s"], np.hypot(s["vx_m_per_s"], s["vy_m_per_s"]), label=name)
-            axes[1, 1].plot(s["time_s"], np.hypot(s["ux_m"], s["uy_m"]) * CM, label=name)
+            axes[1, 0].plot(s["time_s"], speed, label=name)
+            axes[1, 1].plot(s["time_s"], displacement * CM, label=name)
         for ax, label in zip(axes.flat, ("p (kPa, compression +)", "q (kPa)", "speed (m/s)", "displacement (cm)")):
             ax.set_ylabel(label)
         for ax in axes[1]:
@@ -346,6 +367,19 @@ def plot_histories(run):
         axes[0, 0].legend(fontsize=8)
         fig.suptitle(f"{run.label}: gauges")
         fig.savefig(run.dir / "gauges.png")
+        plt.close(fig)
+    if energy_file.is_file():
+        e = read_columns(energy_file)
+        unit = "J/m" if run.dimension == 2 else "J"
+        fig, ax = plt.subplots(figsize=(8, 4), dpi=150, constrained_layout=True)
+        for key, label in (("kinetic", "kinetic"), ("potential", "potential (from t = 0)"),
+                           ("mechanical", "kinetic + potential")):
+            ax.plot(e["time_s"], e[f"{key}_J{per}"], label=label)
+        ax.set_xlabel("t (s)")
+        ax.set_ylabel(f"energy ({unit})")
+        ax.legend(fontsize=8)
+        ax.set_title(f"{run.label}: energy of the soil")
+        fig.savefig(run.dir / "energy.png")
         plt.close(fig)
 
 
@@ -557,6 +591,7 @@ def main():
         run.label = args.labels[0] + (" [INCOMPLETE RUN]" if not run.complete else "")
     if run.dimension == 3:
         plot_3d(run, [Run(d) for d in args.compare], args.labels)
+        plot_histories(run)
         written = sorted(p.name for p in run.dir.glob("*.png"))
         print(f"plot_collapse: wrote {', '.join(written) or 'no picture'} in {run.dir}")
         return
