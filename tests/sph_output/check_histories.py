@@ -7,8 +7,9 @@ the scene, then that scripts/plot_collapse.py draws them.
 boundary_forces.csv: one row per wall present at t = 0 per sample; at t = 0 (the column still at rest
 behind the gate) the floor carries the soil's weight M g and the gate and the fixed wall the thrust
 K0 rho g (H + dx)^2 / 2 outwards (within 5 %: the SPH boundary); gauges.csv: a row per gauge per
-sample, the same times as the forces, zero displacement at t = 0. Then boundary_forces.png and
-gauges.png must be non-blank PNGs."""
+sample, the same times as the forces, zero displacement at t = 0; energy.csv: the same times, the soil
+at rest at t = 0, its potential energy falling, kinetic + potential = mechanical. Then
+boundary_forces.png, gauges.png and energy.png must be non-blank PNGs."""
 import json
 import pathlib
 import subprocess
@@ -63,10 +64,19 @@ check(np.array_equal(np.unique(gauges["time_s"]), times), "gauge and force sampl
 first = gauges[gauges["time_s"] == 0.0]
 check(np.all(first["ux_m"] == 0.0) and np.all(np.abs(first["uy_m"]) < 1e-12), "displacement at t = 0 is not zero")
 
-for name in ("boundary_forces.png", "gauges.png"):
+energy = rows("energy.csv")
+check(np.array_equal(energy["time_s"], times), "energy and force sample times differ")
+weight_height = weight * s["column_height"]  # M g H: the scale of the soil's energies (J/m)
+check(energy["potential_J_per_m"][0] == 0.0 and energy["kinetic_J_per_m"][0] < 1e-6 * weight_height,
+      f"energy at t = 0: {energy[0]} (the soil at rest, its potential measured from t = 0)")
+check(energy["potential_J_per_m"][-1] < -1e-3 * weight_height, "the soil's potential energy did not fall")
+check(np.allclose(energy["mechanical_J_per_m"], energy["kinetic_J_per_m"] + energy["potential_J_per_m"],
+                  rtol=0, atol=1e-12 * weight_height), "mechanical energy is not kinetic + potential")
+
+for name in ("boundary_forces.png", "gauges.png", "energy.png"):
     (run / name).unlink(missing_ok=True)
 subprocess.run([sys.executable, script, str(run)], check=True)
-for name in ("boundary_forces.png", "gauges.png"):
+for name in ("boundary_forces.png", "gauges.png", "energy.png"):
     path = run / name
     if not path.exists():
         failures.append(f"{name} was not written")
