@@ -41,7 +41,7 @@ def check_data_item(item, h5, where):
     data = h5[path]
     dims = tuple(int(d) for d in item.get("Dimensions").split())
     expect(dims == data.shape, f"{where}: {path} has shape {data.shape}, the XDMF says {dims}")
-    kind = {"Float": "f", "Int": "i"}[item.get("NumberType")]
+    kind = {"Float": "f", "Int": "i", "UInt": "u"}[item.get("NumberType")]
     expect(data.dtype.kind == kind and data.dtype.itemsize == int(item.get("Precision")),
            f"{where}: {path} is {data.dtype}, the XDMF says {item.get('NumberType')}{item.get('Precision')}")
     return data
@@ -83,11 +83,15 @@ def check_run(run, attributes):
         for field, components in attributes.items():
             kind = "Vector" if components == 3 else "Scalar"
             expect(found.get(field) == kind, f"{name}: attribute {field} missing or not {kind}")
-        expect(set(found) == set(attributes),
-               f"{name}: the XDMF lists {sorted(found)}, expected {sorted(attributes)}")
+        # Every frame names its particles by their global ids, 0 .. n-1 as built (whatever the fields).
+        expect(found.get("id") == "Scalar", f"{name}: attribute id missing or not Scalar")
+        if "id" in h5[name]:
+            expect(np.array_equal(h5[name]["id"][()], np.arange(n)), f"{name}: ids are not 0..n-1")
+        expect(set(found) == set(attributes) | {"id"},
+               f"{name}: the XDMF lists {sorted(found)}, expected id and {sorted(attributes)}")
         datasets = set(h5[name])
-        expect(datasets == set(attributes) | {"position"},
-               f"{name}: frames.h5 holds {sorted(datasets)}, expected position and {sorted(attributes)}")
+        expect(datasets == set(attributes) | {"position", "id"},
+               f"{name}: frames.h5 holds {sorted(datasets)}, expected position, id and {sorted(attributes)}")
         if "velocity" in datasets and "speed" in datasets:
             velocity, speed = h5[name]["velocity"][()], h5[name]["speed"][()]
             expect(np.allclose(np.hypot(velocity[:, 0], velocity[:, 1]), speed, rtol=1e-14, atol=0),
