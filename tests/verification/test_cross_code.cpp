@@ -375,6 +375,22 @@ TEST_CASE(
   CHECK(std::abs(on_grid / limit - 1.0) > 0.04);
 }
 
+namespace {
+/// CB-Geo's clay of modified_cam_clay_test.cc (M = 1.2, λ = 0.1, κ = 0.03, ν = 0.3) with void ratio e0,
+/// elasticity K ∝ p as CB-Geo's.
+ModifiedCamClay::Params cbgeo_clay(double e0) {
+  ModifiedCamClay::Params p{};
+  p.density = 1800.0;
+  p.poisson_ratio = 0.3;
+  p.friction_angle = 30.0;  // M = 1.2 (eq 26)
+  p.compression_index = 0.1;
+  p.swelling_index = 0.03;
+  p.initial_void_ratio = e0;
+  p.elasticity = Elasticity::Kind::PressureDependent;
+  return p;
+}
+}  // namespace
+
 // --- CB-Geo mpm: Modified Cam-Clay, one strain increment ----------------------------------------
 // Source: cb-geo/mpm, commit 35e2d57ed05286b0487e605cb2ca7843021bfddc,
 //   tests/materials/modified_cam_clay_test.cc, "CamClay check stresses in elastic status": from σ =
@@ -387,15 +403,8 @@ TEST_CASE(
 // K frozen or not gives the same G: soilsph's pressure-dependent elasticity with e0 = 1.0385213287
 // must agree to round-off. (Its plastic-status case is the test after this one.)
 TEST_CASE("CB-Geo mpm ModifiedCamClay elastic increment (modified_cam_clay_test.cc)", "[cross-code]") {
-  ModifiedCamClay::Params p{};
-  p.density = 1800.0;
-  p.poisson_ratio = 0.3;
-  p.friction_angle = 30.0;  // M = 1.2 (eq 26)
-  p.compression_index = 0.1;
-  p.swelling_index = 0.03;
-  p.initial_void_ratio = 1.12 - 0.1 * std::log(300e3 / 1.5 / 100e3) - 0.03 * std::log(1.5);
+  ModifiedCamClay::Params p = cbgeo_clay(1.12 - 0.1 * std::log(300e3 / 1.5 / 100e3) - 0.03 * std::log(1.5));
   REQUIRE(p.initial_void_ratio == Approx(1.0385213287).epsilon(1e-10));  // the test's void_ratio
-  p.elasticity = Elasticity::Kind::PressureDependent;
   State initial;
   initial.stress = isotropic_stress(200e3);
   initial.pc = 300e3;
@@ -551,14 +560,7 @@ TEST_CASE("CB-Geo mpm ModifiedCamClay plastic increment (modified_cam_clay_test.
   const double expected_zz = -211655.0108685302 - (one_step.stress(2) - limit_stress(2));
   const double expected_pc = 200368.9146817101 - (one_step.pc - limit_pc);
 
-  ModifiedCamClay::Params p{};
-  p.density = 1800.0;
-  p.poisson_ratio = 0.3;
-  p.friction_angle = 30.0;  // M = 1.2 (eq 26)
-  p.compression_index = 0.1;
-  p.swelling_index = 0.03;
-  p.initial_void_ratio = e0;
-  p.elasticity = Elasticity::Kind::PressureDependent;
+  ModifiedCamClay::Params p = cbgeo_clay(e0);
   State initial;
   initial.stress = isotropic_stress(200e3);
   initial.pc = 200e3;
