@@ -40,12 +40,11 @@ std::string particle_count_keys(const Geometry3& g) {
 /// The count-independent part of an estimate: the P-wave speed, the step at rest, the steps to the
 /// end time and the run time at kAssumedThroughput for `soil` + `boundary` particles.
 template <int dim>
-RunEstimate estimate_of(const SolverSetupOf<dim>& setup, double end_time, double soil, double boundary,
-                        double bytes_per_particle) {
+RunEstimate estimate_of(const SolverSetupOf<dim>& setup, double end_time, double soil, double boundary) {
   RunEstimate e;
   e.soil_particles = soil < 1e18 ? static_cast<std::size_t>(soil) : static_cast<std::size_t>(1e18);
   e.boundary_particles = boundary < 1e18 ? static_cast<std::size_t>(boundary) : static_cast<std::size_t>(1e18);
-  e.memory_bytes = (soil + boundary) * bytes_per_particle;
+  e.memory_bytes = soil * kSoilBytes[dim] + boundary * kGhostBytes[dim];
   e.sound_speed = setup.sound_speed;
   e.time_step = setup.initial_time_step();
   e.steps = end_time / e.time_step;
@@ -78,7 +77,7 @@ RunEstimate estimate_run(const Scene& scene) {
         boundary += layers * (std::max(1.0, std::round(norm(w.points[k + 1] - w.points[k]) / dx)) + layers);
     }
   }
-  return estimate_of(make_solver_setup(scene), g.end_time, soil, boundary, kBytesPerParticle);
+  return estimate_of(make_solver_setup(scene), g.end_time, soil, boundary);
 }
 
 RunEstimate estimate_run(const Scene3& scene) {
@@ -98,7 +97,7 @@ RunEstimate estimate_run(const Scene3& scene) {
       g.soil);
   double boundary = 0.0;
   for (const Wall3& w : g.walls) boundary += g.boundary_layers * std::abs(signed_area(w.plane.outline)) / (dx * dx);
-  return estimate_of(make_solver_setup(scene), g.end_time, soil, boundary, kBytesPerParticle3);
+  return estimate_of(make_solver_setup(scene), g.end_time, soil, boundary);
 }
 
 template <int dim>

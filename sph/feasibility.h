@@ -25,12 +25,14 @@ struct RunEstimate {
 /// Particle-steps per second assumed by the estimate: the slowest measured one-thread rate
 /// (MCC with `implicit`, 0.6e6; D-P runs 1.3–2.2e6; docs/performance.md), rounded down.
 inline constexpr double kAssumedThroughput = 5e5;
-/// Bytes per particle (soil or ghost): measured 2645 B with 48 neighbour slots (docs/method/sph.md).
-inline constexpr double kBytesPerParticle = 2700;
-/// The same in space, soil and ghosts together: measure_run (`soilsph check`) gave 2.87–2.93 KB on
-/// the shipped axisymmetric column (quarter at r0/Δp = 10 and 20, whole at 20) and the slab
-/// (2026-12-05).
-inline constexpr double kBytesPerParticle3 = 2900;
+/// Bytes a particle holds in a run, per dimension (index 2 or 3): its arrays (ParticlesOf::bytes()
+/// of one particle: 552 B a soil and 213 B a ghost particle in the plane, 704 and 349 B in space),
+/// the step's buffers (32 B; 64 B in space), its row's place (44 B; 52 B) and its row of the
+/// neighbour list (neighbours/neighbour_list.h) at h = 1.3Δp: a soil particle's 24 lattice
+/// candidates of 48 B in the plane, 92 of 24 B in space; a ghost's at most the mean of its layers'
+/// below a lattice soil, 5 and 15.7 (a ghost out of the soil's reach holds none). Rounded up.
+inline constexpr double kSoilBytes[4] = {0, 0, 1800, 3100};
+inline constexpr double kGhostBytes[4] = {0, 0, 550, 850};
 
 /// Most frames a run may write: each frame rewrites the indexes of all before it
 /// (sph/output/frame_writer.h), so their cost grows with the square of the count.

@@ -148,7 +148,13 @@ struct WorkspaceOf {
       : density_next(p.density), volume(p.size()), sound_speed(setup.sound_speed) {
     const auto v = velocities(p);
     for (int a = 0; a < dim; ++a) v_next[a].assign(v[a].begin(), v[a].end());
-    if constexpr (dim == 3) x_next = {p.x, p.y, p.z};
+    if constexpr (dim == 3) {
+      x_next = {p.x, p.y, p.z};
+      // Cells on a grid fixed for the run (neighbours/cell_list.h), so a row depends on positions
+      // alone, as a domain decomposition needs; the plane keeps the bounding box's grid, which its
+      // shipped results were made with.
+      neighbours.anchor_cells_at({setup.domain.lo.x, setup.domain.lo.y, setup.domain.lo.z});
+    }
   }
   /// v^{n+½} as spans, for the stages that read or write it.
   std::array<std::span<double>, dim> v_next_spans() {
@@ -318,7 +324,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
   };
   if (work.search_next) {
     try {
-      nl.search(p.coordinates(), setup.kernel, p.soil_count);  // every thread throws alike, or none
+      nl.search(p.coordinates(), setup.kernel, p.soil_count, p.id);  // every thread throws alike, or none
     } catch (...) {
 #pragma omp critical(soilsph_search_failure)
       if (!work.error) work.error = std::current_exception();
@@ -589,7 +595,7 @@ class TimeLoop {
     work_.time = state.stats.end_time;
     setup_.walls.set_velocities(p_, work_.time);
     work_.failure.restore_fallback_updates(stats_.fallback_stress_updates);
-    work_.neighbours.search(searched_positions<dim>(state), setup_.kernel, p_.soil_count);
+    work_.neighbours.search(searched_positions<dim>(state), setup_.kernel, p_.soil_count, p_.id);
     work_.search_next = work_.neighbours.search_needed(p_.coordinates());
   }
 

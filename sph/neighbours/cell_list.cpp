@@ -8,7 +8,8 @@ namespace soilsph::sph {
 
 template <int dim>
   requires(dim == 2 || dim == 3)
-void CellGrid<dim>::build(const Coordinates<dim>& x, double cell_size, bool keep_positions) {
+void CellGrid<dim>::build(const Coordinates<dim>& x, double cell_size, bool keep_positions,
+                          std::span<const std::size_t> order) {
   const std::size_t n = x[0].size();
   if (n == 0) {
     n_.fill(0);
@@ -41,7 +42,10 @@ void CellGrid<dim>::build(const Coordinates<dim>& x, double cell_size, bool keep
   }
   for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
   cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) sorted_[static_cast<std::size_t>(cursor_[static_cast<std::size_t>(cell_of_[i])]++)] = static_cast<int>(i);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order.empty() ? k : order[k];
+    sorted_[static_cast<std::size_t>(cursor_[static_cast<std::size_t>(cell_of_[i])]++)] = static_cast<int>(i);
+  }
   if (!keep_positions) return;
   for (int d = 0; d < dim; ++d) {
     sorted_x_[d].resize(n);

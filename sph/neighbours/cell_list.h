@@ -14,6 +14,10 @@
 /// every integer k, whatever particles are present: the cell of a particle, and so the order in
 /// which a search meets its neighbours, then depends on its position alone, not on which other
 /// particles one process holds (a domain decomposition gets the pair sums of one process).
+///
+/// Within a cell the points keep the order they are binned in (a stable counting sort): the index
+/// by default; the neighbour list bins the soil by id (neighbour_list.h), so that a cell's content
+/// does not depend on the order the particles are stored in.
 #include <array>
 #include <optional>
 #include <span>
@@ -35,9 +39,11 @@ class CellGrid {
   void anchor_at(const std::array<double, dim>& origin) { anchor_ = origin; }
 
   /// Bins the points x into cells of side `cell_size`; with `keep_positions` also copies their
-  /// positions in cell order for row_of_three(). Throws std::runtime_error for a position that is
-  /// not finite or points spread over too large a domain.
-  void build(const Coordinates<dim>& x, double cell_size, bool keep_positions = false);
+  /// positions in cell order for row_of_three(). Within a cell the points lie in the order they are
+  /// binned: `order` (a permutation of the indices), or by index without it. Throws
+  /// std::runtime_error for a position that is not finite or points spread over too large a domain.
+  void build(const Coordinates<dim>& x, double cell_size, bool keep_positions = false,
+             std::span<const std::size_t> order = {});
 
   /// Cells along axis d.
   int cells(int d) const { return n_[d]; }

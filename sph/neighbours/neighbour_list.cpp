@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <numeric>
+#include <omp.h>
 #include <vector>
 
 namespace soilsph::sph {
@@ -32,11 +34,12 @@ void for_each_stencil_row(const typename CellGrid<dim>::Cell& c, F&& f) {
 
 template <int dim>
   requires(dim == 2 || dim == 3)
-void PairList<dim>::build(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary) {
+void PairList<dim>::build(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary,
+                          std::span<const std::uint64_t> soil_ids) {
   bool needed = false;
 #pragma omp single copyprivate(needed)
   needed = search_needed(x);
-  if (needed) search(x, kernel, first_boundary);
+  if (needed) search(x, kernel, first_boundary, soil_ids);
   const auto n = static_cast<std::ptrdiff_t>(x[0].size());
 #pragma omp for schedule(static)
   for (std::ptrdiff_t s = 0; s < n; ++s) fill_row(static_cast<std::size_t>(s), x, kernel);
@@ -57,7 +60,8 @@ bool PairList<dim>::search_needed(const Coordinates<dim>& x) const {
 
 template <int dim>
   requires(dim == 2 || dim == 3)
-void PairList<dim>::search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary) {
+void PairList<dim>::search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary,
+                           std::span<const std::uint64_t> soil_ids) {
   const std::size_t n = x[0].size();
   const double radius = kernel.support() + kSkinRatio * kernel.smoothing_length();
   const SearchRadii radii{radius * radius, kernel.support() * kernel.support(),
@@ -66,43 +70,33 @@ void PairList<dim>::search(const Coordinates<dim>& x, const Kernel& kernel, std:
 #pragma omp single copyprivate(failure)
   {
     try {
-      cells_.build(x, radius, true);
+      set_binning_order(soil_ids, n);
+      cells_.build(x, radius, true, binning_order_);
     } catch (...) {
       failure = std::current_exception();
     }
     candidate_count_.resize(n);
     count_.assign(n, 0);
-    if (candidates_.size() < n * slots_) candidates_.resize(n * slots_);
-    most_candidates_ = 0;
+    row_block_.resize(n);
+    row_first_.resize(n);
+    blocks_.resize(std::max(blocks_.size(), static_cast<std::size_t>(omp_get_num_threads())));
   }
   if (failure) std::rethrow_exception(failure);  // every thread: the caller's try block catches it
+  const auto thread = static_cast<unsigned>(omp_get_thread_num());
+  Block& block = blocks_[thread];
+  block.candidates.clear();
   const auto rows = static_cast<std::ptrdiff_t>(n);
-  for (;;) {
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t s = 0; s < rows; ++s) {
-      const std::size_t found = search_row(static_cast<std::size_t>(s), x, radii, first_boundary);
-      if (found > slots_) {  // rare: a compressed cluster; grow with a margin and redo
-        std::size_t most = most_candidates_.load(std::memory_order_relaxed);
-        while (found > most && !most_candidates_.compare_exchange_weak(most, found, std::memory_order_relaxed)) {
-        }
-      }
-    }
-    const std::size_t most = most_candidates_.load(std::memory_order_relaxed);  // after the loop's barrier
-#pragma omp barrier
-    if (most == 0) break;
-#pragma omp single
-    {
-      slots_ = most + most / 4;
-      candidates_.resize(n * slots_);
-      most_candidates_ = 0;
-    }
+  for (std::ptrdiff_t s = 0; s < rows; ++s) search_row(static_cast<std::size_t>(s), x, radii, first_boundary, block, thread);
+  // The pair slots of this thread's rows, grown only (first touched by the thread that fills them).
+  const std::size_t slots = block.candidates.size();
+  if (block.neighbour.size() < slots) {
+    block.neighbour.resize(slots);
+    for (auto& a : block.pairs) a.resize(slots);
   }
+#pragma omp barrier
 #pragma omp single
   {
-    if (neighbour.size() < n * slots_) {
-      for (auto& a : pairs_) a.resize(n * slots_);
-      neighbour.resize(n * slots_);
-    }
     const double skin = kSkinRatio * kernel.smoothing_length();
     half_skin2_ = 0.25 * skin * skin;  // (s/2)²
     for (std::size_t d = 0; d < dim; ++d) x_ref_[d].assign(x[d].begin(), x[d].end());
@@ -112,8 +106,19 @@ void PairList<dim>::search(const Coordinates<dim>& x, const Kernel& kernel, std:
 
 template <int dim>
   requires(dim == 2 || dim == 3)
-std::size_t PairList<dim>::search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii,
-                                      std::size_t first_boundary) {
+void PairList<dim>::set_binning_order(std::span<const std::uint64_t> soil_ids, std::size_t n) {
+  binning_order_.clear();
+  if (std::is_sorted(soil_ids.begin(), soil_ids.end())) return;  // ids in index order: bin by index
+  binning_order_.resize(n);
+  std::iota(binning_order_.begin(), binning_order_.end(), std::size_t{0});
+  std::sort(binning_order_.begin(), binning_order_.begin() + static_cast<std::ptrdiff_t>(soil_ids.size()),
+            [&](std::size_t a, std::size_t b) { return soil_ids[a] < soil_ids[b]; });
+}
+
+template <int dim>
+  requires(dim == 2 || dim == 3)
+void PairList<dim>::search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii,
+                               std::size_t first_boundary, Block& block, unsigned block_index) {
   struct Candidate {
     double r2;
     int j;
@@ -137,20 +142,20 @@ std::size_t PairList<dim>::search_row(std::size_t i, const Coordinates<dim>& x, 
       found.push_back({r2, j});
     }
   });
-  const std::size_t count = found.size(), first = i * slots_;
-  candidate_count_[i] = std::min(count, slots_);
-  if (count <= slots_) {
-    // In three bands, each in the search's order: within h (the kernel's inner branch), within the
-    // support 2h (its outer branch), and the skin beyond. While the candidates move less than the
-    // skin, a row's pairs stay nearly a prefix of it and each band takes one branch of the kernel,
-    // so the tests of fill_row are predicted. A stable counting partition, O(n): the order is a
-    // function of the positions alone (the cell order, then the index), as a sort's would be.
-    std::size_t next[3] = {0, 0, 0};
-    for (const Candidate& c : found) ++next[band(c.r2)];
-    next[2] = next[0] + next[1], next[1] = next[0], next[0] = 0;
-    for (const Candidate& c : found) candidates_[first + next[band(c.r2)]++] = c.j;
-  }
-  return count;
+  const std::size_t first = block.candidates.size();
+  row_block_[i] = block_index;
+  row_first_[i] = first;
+  candidate_count_[i] = found.size();
+  block.candidates.resize(first + found.size());
+  // In three bands, each in the search's order: within h (the kernel's inner branch), within the
+  // support 2h (its outer branch), and the skin beyond. While the candidates move less than the
+  // skin, a row's pairs stay nearly a prefix of it and each band takes one branch of the kernel, so
+  // the tests of fill_row are predicted. A stable counting partition, O(n): the order is a function
+  // of the positions alone (the cell order, then the index), as a sort's would be.
+  std::size_t next[3] = {0, 0, 0};
+  for (const Candidate& c : found) ++next[band(c.r2)];
+  next[2] = next[0] + next[1], next[1] = next[0], next[0] = 0;
+  for (const Candidate& c : found) block.candidates[first + next[band(c.r2)]++] = c.j;
 }
 
 template <int dim>
@@ -160,11 +165,12 @@ void PairList<dim>::fill_row(std::size_t i, const Coordinates<dim>& x, const Ker
   // would otherwise reload the rows' addresses and the kernel's constants at every pair.
   const Kernel W = kernel;
   const double support2 = W.support() * W.support();
-  const std::size_t first = i * slots_, candidates = candidate_count_[i];
-  const int* candidate = candidates_.data() + first;
-  int* const j_row = neighbour.data() + first;
+  Block& block = blocks_[row_block_[i]];
+  const std::size_t first = row_first_[i], candidates = candidate_count_[i];
+  const int* candidate = block.candidates.data() + first;
+  int* const j_row = block.neighbour.data() + first;
   std::array<double*, kPairDoubles> row;
-  for (std::size_t a = 0; a < kPairDoubles; ++a) row[a] = pairs_[a].data() + first;
+  for (std::size_t a = 0; a < kPairDoubles; ++a) row[a] = block.pairs[a].data() + first;
   std::size_t k = 0;
   if constexpr (dim == 2) {
     const double xi = x[0][i], yi = x[1][i];
@@ -212,10 +218,14 @@ void PairList<dim>::fill_row(std::size_t i, const Coordinates<dim>& x, const Ker
 
 template <int dim>
   requires(dim == 2 || dim == 3)
-std::size_t PairList<dim>::bytes_per_particle() const {
-  // Per slot: a candidate and a neighbour index, and the pair's doubles; per particle: the two
-  // counts and the search positions.
-  return slots_ * (2 * sizeof(int) + kPairDoubles * sizeof(double)) + 2 * sizeof(std::size_t) + dim * sizeof(double);
+std::size_t PairList<dim>::bytes() const {
+  // Per slot: a candidate (as allocated) and a pair, its neighbour index and doubles; per particle:
+  // the row's place, its two counts and its search position.
+  std::size_t slots = 0;
+  for (const Block& b : blocks_)
+    slots += b.candidates.capacity() * sizeof(int) + b.neighbour.size() * (sizeof(int) + kPairDoubles * sizeof(double));
+  const std::size_t per_row = sizeof(unsigned) + 3 * sizeof(std::size_t) + dim * sizeof(double);
+  return slots + size() * per_row;
 }
 
 template class PairList<2>;

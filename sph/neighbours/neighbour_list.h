@@ -1,16 +1,21 @@
 #pragma once
 /// @file
 /// The neighbour list, in 2 or 3 dimensions: for every particle i, the particles j ≠ i within the
-/// kernel support, with the pair quantities the stages need precomputed once per step. Flat arrays
-/// with a fixed number of slots per particle (grown when a particle has more candidates than any
-/// before). Boundary–boundary pairs are left out: no stage uses them (a ghost particle only reads
+/// kernel support, with the pair quantities the stages need precomputed once per step, in flat
+/// arrays (see Storage). Boundary–boundary pairs are left out: no stage uses them (a ghost particle only reads
 /// the soil around it).
 ///
 /// What a pair row holds depends on the dimension. In 2D (~21 pairs a particle at h = 1.3Δp):
 /// x_i − x_j, W_ij and ∇_i W_ij, so that no pass reads a neighbour's position. In 3D (~74 pairs,
-/// and ~100 candidates within the search radius): j, W_ij and dW/dr / r only, 20 B a pair instead
-/// of 44 B; a pass takes x_i − x_j from the positions (∇_i W_ij = dW/dr / r · (x_i − x_j)), which
-/// keeps the list near 2.5 KB a particle (bytes_per_particle()).
+/// and 92 candidates within the search radius in the lattice): j, W_ij and dW/dr / r only, 20 B a
+/// pair instead of 44 B; a pass takes x_i − x_j from the positions (∇_i W_ij = dW/dr / r ·
+/// (x_i − x_j)), which keeps a soil particle's row near 2.3 KB (bytes()).
+///
+/// Storage: each row holds exactly its candidates (and as many pair slots), in the block of the
+/// thread that searched it, so a ghost far from the soil (no candidates: boundary–boundary pairs are
+/// left out) costs nothing but its row's place, and a crowded row needs no slots reserved for every
+/// other row. The rows of one thread lie back to back in the search's order; a row is found through
+/// its block and first slot.
 ///
 /// Verlet skin: the cell-list search finds the candidates within 2h + s (s = 0.25h) and is
 /// repeated only when some particle has moved more than s/2 since the last search (two particles
@@ -25,7 +30,7 @@
 /// thread of an enclosing parallel region (the solver's one region per run) or, outside any region,
 /// by one thread, which then does all the work.
 #include <array>
-#include <atomic>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -81,15 +86,21 @@ class PairList {
   void anchor_cells_at(const std::array<double, dim>& origin) { cells_.anchor_at(origin); }
 
   /// Finds the neighbours of every point; points [first_boundary, size) are boundary points, which
-  /// must not move. Searches only when search_needed(); then fills every row.
-  void build(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary);
+  /// must not move. Searches only when search_needed(); then fills every row. `soil_ids` (one per
+  /// soil point, or none: the indices) order the soil within a cell (see search()).
+  void build(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary,
+             std::span<const std::uint64_t> soil_ids = {});
   /// True before the first search, for a different point count, or when a point has moved more
   /// than half the skin since the last search (serial; O(n)).
   bool search_needed(const Coordinates<dim>& x) const;
-  /// The cell-list search for candidates within 2h + s. Throws std::runtime_error for a position
-  /// that is not finite or points spread over too large a domain (in the calling thread that does
-  /// the cell binning; call from a try block inside a parallel region).
-  void search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary);
+  /// The cell-list search for candidates within 2h + s. A row lists its candidates by cell, and
+  /// within a cell the soil by `soil_ids` (one per soil point; none: the indices), then the
+  /// boundary by index: the rows, and so every sum over them, depend on the positions and ids alone,
+  /// not on the order the soil is stored in. Throws std::runtime_error for a position that is not
+  /// finite or points spread over too large a domain (in the calling thread that does the cell
+  /// binning; call from a try block inside a parallel region).
+  void search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary,
+              std::span<const std::uint64_t> soil_ids = {});
   /// The pairs of particle i within the support, from its candidates (no synchronisation).
   void fill_row(std::size_t i, const Coordinates<dim>& x, const Kernel& kernel);
 
@@ -124,12 +135,13 @@ class PairList {
   /// Number of pairs of particle i.
   std::size_t pair_count(std::size_t i) const { return count_[i]; }
   Row row(std::size_t i) const {
-    const std::size_t k = i * slots_;
+    const Block& b = blocks_[row_block_[i]];
+    const std::size_t k = row_first_[i];
     if constexpr (dim == 2)
-      return {neighbour.data() + k, pairs_[0].data() + k, pairs_[1].data() + k, pairs_[2].data() + k,
-              pairs_[3].data() + k, pairs_[4].data() + k, count_[i]};
+      return {b.neighbour.data() + k, b.pairs[0].data() + k, b.pairs[1].data() + k, b.pairs[2].data() + k,
+              b.pairs[3].data() + k, b.pairs[4].data() + k, count_[i]};
     else
-      return {neighbour.data() + k, pairs_[0].data() + k, pairs_[1].data() + k, count_[i]};
+      return {b.neighbour.data() + k, b.pairs[0].data() + k, b.pairs[1].data() + k, count_[i]};
   }
   /// Calls f(pair) for every pair of particle i, as filled by fill_row().
   template <class F>
@@ -151,36 +163,45 @@ class PairList {
   const std::vector<double>& search_y() const { return x_ref_[1]; }
   /// Cell-list searches done so far.
   std::size_t searches() const { return searches_; }
-  /// Bytes held per particle by the list (pairs and candidates).
-  std::size_t bytes_per_particle() const;
+  /// Bytes held by the list: candidates, pairs and the rows' places, counts and search positions.
+  std::size_t bytes() const;
+  /// bytes() over the particles: the mean over soil and ghosts, whose rows differ in length.
+  std::size_t bytes_per_particle() const { return size() == 0 ? 0 : bytes() / size(); }
 
   static constexpr double kSkinRatio = 0.25;  ///< s/h
   /// The doubles stored per pair: x_i − x_j, W, ∇W in 2D; W, dW/dr / r in 3D.
   static constexpr int kPairDoubles = dim == 2 ? 5 : 2;
 
  private:
-  // Per pair k (i, j = neighbour[k]): j, and the kPairDoubles arrays of PairRow<dim>.
-  std::vector<int> neighbour;
-  std::array<std::vector<double>, kPairDoubles> pairs_;
+  /// The rows one thread searched, back to back: candidate slots, and for pair k of a row (i,
+  /// j = neighbour[k]) j and the kPairDoubles arrays of PairRow<dim>, as many slots as candidates.
+  struct Block {
+    std::vector<int> candidates, neighbour;
+    std::array<std::vector<double>, kPairDoubles> pairs;
+  };
 
   /// Squares of the search radius 2h + s, the support 2h and h.
   struct SearchRadii {
     double search2, support2, inner2;
   };
-  /// Candidates of particle i within the search radius; returns how many there are (all of them,
-  /// even beyond the slots, which then must grow).
-  std::size_t search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii,
-                         std::size_t first_boundary);
+  /// Appends the candidates of particle i within the search radius to `block` and records the row's
+  /// place.
+  void search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii, std::size_t first_boundary,
+                  Block& block, unsigned block_index);
+
+  /// The order the points are binned in when the soil's ids are not increasing: the soil by id,
+  /// then the boundary; empty when the ids are (the indices' order is theirs).
+  void set_binning_order(std::span<const std::uint64_t> soil_ids, std::size_t n);
 
   CellGrid<dim> cells_;
-  /// Candidate (= pair) slots per particle: in 3D, 92 lattice points lie within 2h + s at h = 1.3Δp.
-  std::size_t slots_ = dim == 2 ? 48 : 100;
+  std::vector<std::size_t> binning_order_;
+  std::vector<Block> blocks_;               ///< one per thread of the searches so far
+  std::vector<unsigned> row_block_;         ///< the block holding row i
+  std::vector<std::size_t> row_first_;      ///< row i's first slot in its block
   std::vector<std::size_t> count_, candidate_count_;
-  std::vector<int> candidates_;
   std::array<std::vector<double>, dim> x_ref_;  ///< positions at the last search
   double half_skin2_ = 0.0;                     ///< (s/2)²
   std::size_t searches_ = 0;
-  std::atomic<std::size_t> most_candidates_{0};  ///< largest row found beyond the slots (0: none)
 };
 
 /// The plane-strain solver's neighbour list.

@@ -124,12 +124,34 @@ TEMPLATE_TEST_CASE_SIG("with an anchored grid a particle's row does not depend o
 }
 
 TEST_CASE("a 3D particle's neighbour list takes under 3 KB", "[neighbours]") {
-  // 92 lattice points lie within 2h + s = 2.925 dx: the default 100 slots hold them, and those of a
-  // lattice disturbed by ±2 % of the spacing, without growing. (The slots follow the most crowded
-  // particle: a cluster compressed by 10 % in volume would raise every row's share.)
+  // 92 lattice points lie within 2h + s = 2.925 dx; a row holds exactly its candidates, 24 B each
+  // (two indices and two doubles), so an interior row of a lattice disturbed by ±2 % of the
+  // spacing takes about 2.2 KB, the rows at the block's faces less.
   const double dx = 1.0e-3;
   const auto points = jittered_lattice<3>(8, dx, 0.02);
   PairList<3> nl;
   nl.build(view<3>(points), CubicSplineKernel<3>(1.3 * dx), points[0].size());
   CHECK(nl.bytes_per_particle() <= 3000);
+}
+
+TEST_CASE("a ghost out of the soil's reach holds no pair slots", "[neighbours]") {
+  // Ghosts pair only with soil: a floor of ghosts far below the soil has no candidates, so it adds
+  // its rows' places (under 64 B each) and nothing else, where one slot is 24 B and a soil row ~90.
+  const double dx = 1.0e-3;
+  const auto soil = jittered_lattice<3>(6, dx, 0.02);
+  auto with_floor = soil;
+  const int side = 20;
+  for (int k = 0; k < side; ++k)
+    for (int i = 0; i < side; ++i) {
+      with_floor[0].push_back(i * dx);
+      with_floor[1].push_back(-50.0 * dx);
+      with_floor[2].push_back(k * dx);
+    }
+  const CubicSplineKernel<3> kernel(1.3 * dx);
+  PairList<3> alone, beside_floor;
+  alone.build(view<3>(soil), kernel, soil[0].size());
+  beside_floor.build(view<3>(with_floor), kernel, soil[0].size());
+  const std::size_t ghosts = side * side;
+  CHECK(beside_floor.bytes() - alone.bytes() < 64 * ghosts);
+  for (std::size_t g = soil[0].size(); g < with_floor[0].size(); ++g) CHECK(beside_floor.pair_count(g) == 0);
 }
