@@ -32,9 +32,15 @@ std::string particle_count_keys(const Geometry& g) {
                   : "[scene] particle_spacing and the [[regions]] and [[boundaries]]";
 }
 std::string particle_count_keys(const Geometry3& g) {
-  return g.shape == Geometry3::Shape::AxisymmetricColumn
-             ? "[scene] particle_spacing, column_radius, column_height, floor_radius and symmetry"
-             : "[scene] particle_spacing, column_width, column_height, slab_thickness and floor_length";
+  switch (g.shape) {
+    case Geometry3::Shape::AxisymmetricColumn:
+      return "[scene] particle_spacing, column_radius, column_height, floor_radius and symmetry";
+    case Geometry3::Shape::Slab:
+      return "[scene] particle_spacing, column_width, column_height, slab_thickness and floor_length";
+    case Geometry3::Shape::Regions:
+      break;
+  }
+  return "[scene] particle_spacing, floor_margin and the [[regions]]";
 }
 
 /// The count-independent part of an estimate: the P-wave speed, the step at rest, the steps to the
@@ -82,19 +88,11 @@ RunEstimate estimate_run(const Scene& scene) {
 
 RunEstimate estimate_run(const Scene3& scene) {
   const Geometry3& g = scene.geometry;
-  const double dx = g.particle_spacing, cell = dx * dx * dx;
+  const double dx = g.particle_spacing;
   // The soil's volume in cells (its nodes fill it one per cell, the top row included), and each
   // wall's area in cells times its ghost layers, without building either.
-  const double soil = std::visit(
-      [&](const auto& shape) -> double {
-        using Shape = std::decay_t<decltype(shape)>;
-        if constexpr (std::is_same_v<Shape, ColumnCylinder>)
-          return std::numbers::pi * shape.radius * shape.radius * (g.azimuth_span_deg / 360.0) *
-                 (shape.height + dx) / cell;
-        else
-          return std::abs(signed_area(shape.outline)) * (shape.z_max - shape.z_min) / cell;
-      },
-      g.soil);
+  double soil = 0.0;
+  for (const SoilRegion3& region : g.regions) soil += estimated_particles(region, dx);
   double boundary = 0.0;
   for (const Wall3& w : g.walls) boundary += g.boundary_layers * std::abs(signed_area(w.plane.outline)) / (dx * dx);
   return estimate_of(make_solver_setup(scene), g.end_time, soil, boundary);

@@ -6,25 +6,12 @@
 
 #include "sph/initial_state_3d.h"
 #include "sph/read_measures.h"
+#include "sph/read_regions_3d.h"
 #include "sph/scene_sections.h"
 
 namespace soilsph::sph {
 
 using namespace scene_sections;
-
-bool ColumnCylinder::contains(Vec3 p) const {
-  if (symmetry == ColumnSymmetry::Quarter && p.x < 0.0) return false;
-  if (symmetry != ColumnSymmetry::None && p.z < 0.0) return false;
-  const double tolerance = 1e-9 * height;
-  return p.x * p.x + p.z * p.z <= radius * radius * (1.0 + 1e-9) && p.y >= -tolerance &&
-         p.y <= height + tolerance;
-}
-
-Box3 ColumnCylinder::bounds() const {
-  const double x_lo = symmetry == ColumnSymmetry::Quarter ? 0.0 : -radius;
-  const double z_lo = symmetry == ColumnSymmetry::None ? -radius : 0.0;
-  return {{x_lo, 0.0, z_lo}, {radius, height, radius}};
-}
 
 double default_floor_radius(double column_radius, double column_height, double spacing) {
   // Twice Lube's runout beyond the column: SPH deposits of frictional soil run out farther than
@@ -85,6 +72,8 @@ Wall3 wall(Vec3 corner, Vec3 a, Vec3 b, WallKind kind, const std::string& label,
           .label = label};
 }
 
+}  // namespace
+
 /// The box of the floor's extent [x_lo, x_hi] × [z_lo, z_hi] grown by the ghost layers and the
 /// kernel support, from below the floor's ghosts up to twice the soil's height above the floor (or
 /// the walls' tops, if higher).
@@ -94,6 +83,8 @@ Box3 domain_around(const Geometry3& g, double x_lo, double x_hi, double z_lo, do
   return {{x_lo - margin, g.floor_level - margin, z_lo - margin},
           {x_hi + margin, std::max(g.floor_level + 2.0 * soil_height, wall_top + margin), z_hi + margin}};
 }
+
+namespace {
 
 /// particle_spacing, smoothing_ratio, end_time and boundary_layers, and the levels they set: the
 /// first row at y = 0, the floor surface half a spacing below it and the free surface half a
@@ -128,7 +119,7 @@ void read_axisymmetric_column(const TableReader& t, const std::string& source, G
   g.azimuth_span_deg = g.symmetry == ColumnSymmetry::Quarter ? 90.0
                        : g.symmetry == ColumnSymmetry::Half  ? 180.0
                                                              : 360.0;
-  g.soil = ColumnCylinder{g.column_radius, g.column_height, g.symmetry};
+  g.regions = {{.shape = ColumnCylinder{g.column_radius, g.column_height, g.symmetry}, .material = "", .name = "[scene] column"}};
   // Nodes ((i + ½)Δp, jΔp, (k + ½)Δp): none on the symmetry planes, each mirrored by a ghost.
   g.lattice = Lattice3{{0.5 * dx, 0.0, 0.5 * dx}, dx};
   g.deposit_axis = {.point = {0.0, g.floor_level, 0.0},
@@ -170,7 +161,9 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
   g.symmetry = ColumnSymmetry::None;
   g.azimuth_span_deg = 0.0;
   const double W = g.column_width, H = g.column_height, T = g.slab_thickness;
-  g.soil = make_extrusion({{0.0, 0.0}, {W, 0.0}, {W, H}, {0.0, H}}, 0.0, T, source + ": the slab");
+  g.regions = {{.shape = make_extrusion({{0.0, 0.0}, {W, 0.0}, {W, H}, {0.0, H}}, 0.0, T, source + ": the slab"),
+                .material = "",
+                .name = "[scene] slab"}};
   // Nodes (iΔp, jΔp, (k + ½)Δp): the 2D column's in x and y, none on the planes z = 0 and z = T.
   g.lattice = Lattice3{{0.0, 0.0, 0.5 * dx}, dx};
   g.deposit_axis = {.point = {W, g.floor_level, 0.0},
@@ -205,8 +198,8 @@ Geometry3 read_geometry(const TableReader& t, const std::string& source, Vec3 gr
         "slab_thickness a slab");
   if (!radius && !slab)
     t.fail("column_radius",
-           "is missing: a 3D scene is an axisymmetric column (column_radius, column_height) or a slab "
-           "(column_width, column_height, slab_thickness)");
+           "is missing: a 3D scene is an axisymmetric column (column_radius, column_height), a slab "
+           "(column_width, column_height, slab_thickness) or [[regions]]");
   if (t.has("lattice_origin")) t.fail("lattice_origin", "is fixed by the 3D shorthand's keys");
   Geometry3 g{};
   g.gravity = gravity;
@@ -220,34 +213,44 @@ Geometry3 read_geometry(const TableReader& t, const std::string& source, Vec3 gr
 }  // namespace
 
 Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
-  for (const char* table : {"regions", "boundaries"})
-    if (root.get(table))
-      throw ParameterError(
-          source + ": [[" + table +
-          "]] describe 2D scenes; a 3D scene is built from [scene] "
-          "column_radius (an axisymmetric column) or column_width and slab_thickness (a slab)");
-  if (root.get("deposit"))
+  if (root.get("boundaries"))
     throw ParameterError(source +
-                         ": [deposit] is not read in a 3D scene (the axisymmetric column measures its deposit "
-                         "from its axis, the slab from its fixed wall)");
-  static constexpr std::string_view kTables[] = {"scene",    "initial", "material", "materials",
-                                                 "numerics", "output",  "gauges"};
+                         ": [[boundaries]] describe 2D scenes; a 3D scene's walls are its shorthand's (column_radius: "
+                         "an axisymmetric column, column_width and slab_thickness: a slab), or the floor under its "
+                         "[[regions]] ([scene] floor_level, floor_margin)");
+  const bool regions = root.get("regions") != nullptr;
+  if (root.get("deposit") && !regions)
+    throw ParameterError(source +
+                         ": [deposit] is not read in a 3D shorthand scene (the axisymmetric column measures its deposit "
+                         "from its axis, the slab from its fixed wall); a scene of [[regions]] takes [deposit] axis");
+  static constexpr std::string_view kTables[] = {"scene",    "initial", "material", "materials", "regions",
+                                                 "numerics", "output",  "deposit",  "gauges"};
   check_tables(root, source, kTables);
   if (scene_dimension(root, source) != 3)
     throw ParameterError(source +
                          ": a 2D scene ([scene] dimension = 2 or absent): load it with load_scene or "
                          "load_any_scene; a 3D scene says [scene] dimension = 3");
   const SceneTables tables(root, source);
-  if (!tables.materials.names.front().empty())
+  if (!regions && !tables.materials.names.front().empty())
     throw ParameterError(source +
-                         ": a 3D scene holds one soil: give one [material] table ([materials.NAME] "
-                         "tables are for the [[regions]] of 2D scenes)");
+                         ": [materials.NAME] tables need [[regions]] that name them; the 3D shorthands "
+                         "(column_radius, column_width) hold one soil, given by [material]");
   const TableReader& t = tables.scene;
   (void)t.integer_or("dimension", 3, 3, 3);
   toml::table extra;
+  toml::array regions_resolved;
   const Vec3 gravity = read_gravity(t, tables.scene_table, extra);
-  const Geometry3 geometry = read_geometry(t, source, gravity);
-  const std::vector<std::size_t> used{0};
+  Geometry3 geometry{};
+  std::vector<int> region_material{0};
+  std::vector<std::size_t> used{0};
+  if (regions) {
+    geometry.gravity = gravity;
+    read_regions_geometry(t, tables.scene_table, root, geometry, tables.materials.names, extra, regions_resolved);
+    region_material.clear();
+    used = materials_in_use(geometry.regions, tables.materials.names, region_material);
+  } else {
+    geometry = read_geometry(t, source, gravity);
+  }
   const SoilColumn soil{.gravity = geometry.gravity_magnitude(),
                         .height = geometry.column_height,
                         .spacing = geometry.particle_spacing,
@@ -255,17 +258,21 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
                         .smallest_lateral_stress_ratio = [&](const Material& m) {
                           return smallest_admissible_lateral_stress_ratio_3d(m, geometry);
                         }};
-  Scene3 scene{read_settings(tables, used, soil), geometry};
+  Scene3 scene{read_settings(tables, used, soil), geometry, {}, std::move(region_material)};
+  toml::table deposit_resolved;
+  if (regions) read_deposit_3d(root, source, scene.geometry, deposit_resolved);
   if (scene.initial.stress == InitialStress::GravityLoading)
     tables.initial.fail(
         "stress",
         "= \"gravity-loading\" relaxes the soil with the 2D solver; a 3D scene starts "
-        "from \"flat-surface\" (\"local-surface\" is the same for its flat-topped shorthands)");
+        "from \"flat-surface\" or \"local-surface\" (the top of each particle's lattice column)");
   toml::array gauges_resolved;
   scene.gauges = read_gauges<3>(root, source, gauges_resolved);
   reject_unknown_keys(tables);
   check_unused_materials(tables, used);
   record_settings(tables, extra, scene.resolved);
+  if (regions) scene.resolved.insert("regions", std::move(regions_resolved));
+  if (regions && scene.geometry.deposit_measured) scene.resolved.insert("deposit", std::move(deposit_resolved));
   if (!gauges_resolved.empty()) scene.resolved.insert("gauges", std::move(gauges_resolved));
   return scene;
 }

@@ -2,11 +2,13 @@
 /// @file
 /// A 3D scene (`[scene] dimension = 3`): what every scene has (SceneSettings: materials,
 /// [initial], [numerics], [output], rest, limits, `resolved`) and the geometry of space, built from
-/// one of two shorthands (docs/reference/scenes.md, "Three dimensions"):
+/// one of two shorthands or from [[regions]] (docs/reference/scenes.md, "Three dimensions"):
 /// - the axisymmetric column, column_radius and column_height: a cylinder of soil standing free on
 ///   a no-slip floor, axis along y through x = z = 0, run as a quarter (default), a half or whole;
 /// - the slab, column_width, column_height and slab_thickness: the 2D column extruded along z
-///   between two free-slip planes, with the 2D column's fixed wall, floor and withdrawal.
+///   between two free-slip planes, with the 2D column's fixed wall, floor and withdrawal;
+/// - [[regions]] (sph/read_regions_3d.h): boxes, cylinders, extrusions, STL solids and imported
+///   particles, each of its [materials.NAME], standing on a no-slip floor.
 /// y is up, as in 2D: gravity defaults to (0, −9.81, 0).
 #include <span>
 #include <string>
@@ -14,37 +16,16 @@
 #include <vector>
 
 #include "sph/analysis/axisymmetric_deposit.h"
+#include "sph/geometry/cylinder.h"
 #include "sph/geometry/extrusion.h"
 #include "sph/geometry/planar_wall.h"
+#include "sph/geometry/regions_3d.h"
 #include "sph/geometry/solid.h"
 #include "sph/geometry/vec3.h"
 #include "sph/scene.h"
 #include "sph/scene_settings.h"
 
 namespace soilsph::sph {
-
-/// Which part of an axisymmetric column is run; the rest is mirrored by free-slip symmetry planes.
-enum class ColumnSymmetry {
-  Quarter,  ///< "quarter": x ≥ 0, z ≥ 0, symmetry planes x = 0 and z = 0 (azimuth span 90°)
-  Half,     ///< "half": z ≥ 0, symmetry plane z = 0 (180°)
-  None,     ///< "none": the whole cylinder (360°)
-};
-
-/// A cylinder of soil on the floor: axis along y through x = z = 0, radius r0, 0 ≤ y ≤ H0, cut to
-/// the part its symmetry keeps. A SolidShape (geometry/solid.h): its nodes are the soil.
-struct ColumnCylinder {
-  double radius;  ///< r0 (m)
-  double height;  ///< H0 (m)
-  ColumnSymmetry symmetry;
-
-  /// x² + z² ≤ r0² (relative round-off 10⁻⁹), 0 ≤ y ≤ H0 (10⁻⁹ H0), and x ≥ 0 (quarter), z ≥ 0
-  /// (quarter and half).
-  bool contains(Vec3 p) const;
-  Box3 bounds() const;
-};
-
-/// The soil of a 3D scene: the cylinder or the extruded column.
-using SoilShape3 = std::variant<ColumnCylinder, Extrusion>;
 
 /// A wall of space: its plane polygon, how it acts on the soil (as the 2D Wall) and its name in the
 /// run's histories.
@@ -57,10 +38,10 @@ struct Wall3 {
 
 /// [scene] of a 3D scene: the shorthand's keys and what they build.
 struct Geometry3 {
-  enum class Shape { AxisymmetricColumn, Slab };
+  enum class Shape { AxisymmetricColumn, Slab, Regions };
   Shape shape;
 
-  // The keys (each as used; those of the other shorthand 0).
+  // The keys (each as used; those of the other shorthand, and all of them with [[regions]], 0).
   double column_radius;            ///< axisymmetric: r0 (m)
   double column_width;             ///< slab: W (m), soil on 0 ≤ x ≤ W
   double column_height;            ///< H0 (m), soil on 0 ≤ y ≤ H0
@@ -76,16 +57,21 @@ struct Geometry3 {
   int boundary_layers;             ///< layers of ghost particles behind each wall
 
   // What they build.
-  SoilShape3 soil;   ///< the soil's solid
-  Lattice3 lattice;  ///< soil and ghost nodes (axisymmetric: origin (Δp/2, 0, Δp/2); slab: (0, 0, Δp/2))
+  /// The soil: the shorthand's one region (its cylinder or extruded column), or the [[regions]].
+  std::vector<SoilRegion3> regions;
+  Lattice3 lattice;  ///< soil and ghost nodes (axisymmetric: origin (Δp/2, 0, Δp/2); slab: (0, 0, Δp/2);
+                     ///< regions: [scene] lattice_origin, default (Δp/2, Δp/2, Δp/2))
   std::vector<Wall3> walls;  ///< every wall present at t = 0 (a withdrawn wall is never built)
   Box3 domain;               ///< no soil particle may leave it: the floor's extent, ghosts and kernel support
                              ///< around it, up to twice the soil's height above the floor
   double floor_level;        ///< the floor surface's height y (m), −Δp/2: the potential-energy datum
-  double surface_level;      ///< the geostatic free surface: H0 + Δp/2 (m)
-  double base_level;         ///< the lowest soil particle: 0 (m)
-  DepositAxis deposit_axis;  ///< the column's axis on the floor (the slab: the fixed wall's foot, up y)
-  double azimuth_span_deg;   ///< 90, 180 or 360 (the slab: 0, no azimuths)
+                             ///< (regions: [scene] floor_level)
+  double surface_level;      ///< the geostatic free surface: H0 + Δp/2 (m) (regions: their top)
+  double base_level;         ///< the lowest soil particle: 0 (m) (regions: the lowest soil row)
+  DepositAxis deposit_axis;  ///< the column's axis on the floor (the slab: the fixed wall's foot, up y;
+                             ///< regions: [deposit] axis)
+  double azimuth_span_deg;   ///< 90, 180 or 360 (the slab: 0, no azimuths; regions: [deposit] azimuth_span)
+  bool deposit_measured = true;  ///< false for regions without [deposit]: their measures are null
 
   double smoothing_length() const { return smoothing_ratio * particle_spacing; }
   double gravity_magnitude() const { return norm(gravity); }
@@ -102,7 +88,13 @@ struct Geometry3 {
 struct Scene3 : SceneSettings {
   Geometry3 geometry;
   std::vector<GaugeOf<3>> gauges;  ///< [[gauges]], positions [x, y, z]
+  std::vector<int> region_material;  ///< each region's index into `materials` (the shorthands: {0})
 };
+
+/// The box of the floor's extent [x_lo, x_hi] × [z_lo, z_hi] grown by the ghost layers and the
+/// kernel support, from below the floor's ghosts up to twice the soil's height above the floor (or
+/// the walls' tops, if higher): Geometry3::domain.
+Box3 domain_around(const Geometry3& g, double x_lo, double x_hi, double z_lo, double z_hi, double wall_top);
 
 /// The default floor half-width of an axisymmetric column: twice the runout of Lube et al. (2004)
 /// at its aspect ratio beyond the column, plus four spacings: r0 (1 + 2 (r∞ − r0)/r0) + 4 Δp.

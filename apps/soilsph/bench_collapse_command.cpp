@@ -132,12 +132,13 @@ struct TimedRun {
   double rate;
 };
 
-/// The deposit columns of a 3D run: the slab's 2D measures; the axisymmetric column's runout radius
-/// and height on the axis as runout and height (no repose angle).
+/// The deposit columns of a 3D run: the slab's 2D measures; the axisymmetric column's (and a regions
+/// scene's with [deposit]) runout radius and height on the axis as runout and height (no repose angle).
 sph::DepositMetrics deposit_of(const sph::Scene3& scene, const sph::Collapse3& collapse) {
   if (scene.geometry.shape == sph::Geometry3::Shape::Slab) return collapse.slab_deposit();
-  const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
   const double none = std::numeric_limits<double>::quiet_NaN();
+  if (!scene.geometry.deposit_measured) return {.runout_m = none, .height_m = none, .repose_angle_deg = none, .runout_thick_m = none};
+  const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
   return {.runout_m = d.runout_radius_m, .height_m = d.height_m, .repose_angle_deg = none, .runout_thick_m = none};
 }
 

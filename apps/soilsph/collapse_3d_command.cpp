@@ -51,6 +51,19 @@ struct RunRecord {
   std::optional<double> resumed_from;  ///< the checkpoint's time (s) of a resumed run
 };
 
+/// The name of a 3D scene's geometry in summary.json.
+std::string shape_name(sph::Geometry3::Shape shape) {
+  switch (shape) {
+    case sph::Geometry3::Shape::AxisymmetricColumn:
+      return "axisymmetric-column";
+    case sph::Geometry3::Shape::Slab:
+      return "slab";
+    case sph::Geometry3::Shape::Regions:
+      break;
+  }
+  return "regions";
+}
+
 /// The figures of the run and its deposit (docs/reference/output-formats.md, "3D runs").
 std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collapse, const RunRecord& record) {
   const sph::RunStatistics& stats = record.stats;
@@ -58,7 +71,7 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
   const sph::ParticlesOf<3>& p = collapse.particles();
   JsonFields j;
   j.add("dimension", std::size_t{3})
-      .add("shape", g.shape == sph::Geometry3::Shape::AxisymmetricColumn ? "axisymmetric-column" : "slab")
+      .add("shape", shape_name(g.shape))
       .add("model", std::string(model_name(scene.material)))
       .add("particles", p.soil_count)
       .add("boundary_particles", p.boundary_count())
@@ -92,12 +105,22 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
         .add("lube2004_runout_radius_m", r0 * (1.0 + sph::lube2004::runout_ratio(a)))
         .add("lube2004_height_m", r0 * sph::lube2004::height_ratio(a))
         .add("lube2004_time_to_rest_s", sph::lube2004::time_to_rest(g.column_height, g.gravity_magnitude()));
-  } else {
+  } else if (g.shape == sph::Geometry3::Shape::Slab) {
     const sph::DepositMetrics d = collapse.slab_deposit();
     j.add("runout_m", d.runout_m)
         .add("height_m", d.height_m)
         .add("repose_angle_deg", d.repose_angle_deg)
         .add("runout_thick_m", d.runout_thick_m);
+  } else if (g.deposit_measured) {  // regions: the axisymmetric measures from [deposit] axis
+    const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
+    j.add("azimuth_span_deg", g.azimuth_span_deg)
+        .add("runout_radius_m", d.runout_radius_m)
+        .add("runout_radius_spread_m", d.runout_radius_spread_m)
+        .add("height_m", d.height_m)
+        .add("sector_runout_m", d.sector_runout_m);
+  } else {  // regions without [deposit]: no frame to measure from
+    for (const char* key : {"azimuth_span_deg", "runout_radius_m", "runout_radius_spread_m", "height_m", "sector_runout_m"})
+      j.raw(key, "null");
   }
   j.add("version", std::string(kVersion)).add("command_line", invocation()).raw("inputs", sph::scene_json(scene));
   return j.str();
@@ -106,7 +129,10 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
 void report(const sph::Scene3& scene, const sph::Collapse3& collapse, const sph::RunStatistics& stats,
             const fs::path& dir) {
   if (stats.stopped_at_rest) std::cout << "at rest at t = " << stats.end_time << " s after " << stats.steps << " steps\n";
-  if (scene.geometry.shape == sph::Geometry3::Shape::AxisymmetricColumn) {
+  const sph::Geometry3& g = scene.geometry;
+  if (g.shape == sph::Geometry3::Shape::Regions && !g.deposit_measured) {
+    std::cout << "deposit (runout radius, height) undefined: add a [deposit] table (axis = [x, z])";
+  } else if (g.shape != sph::Geometry3::Shape::Slab) {
     const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
     std::cout << "runout radius " << d.runout_radius_m << " m (spread over azimuths " << d.runout_radius_spread_m
               << " m), height on the axis " << d.height_m << " m";

@@ -56,8 +56,6 @@ Vec<dim> read_vector_of(const toml::node& node, const std::string& where, std::s
 template Vec2 read_vector_of<2>(const toml::node&, const std::string&, std::string_view);
 template Vec3 read_vector_of<3>(const toml::node&, const std::string&, std::string_view);
 
-namespace {
-
 std::vector<Vec2> points_of(const toml::table& table, const std::string& where, std::size_t least) {
   const toml::node* node = table.get("points");
   const std::string hint = " (an array of at least " + std::to_string(least) + " [x, y] points, m)";
@@ -70,14 +68,14 @@ std::vector<Vec2> points_of(const toml::table& table, const std::string& where, 
   return points;
 }
 
+namespace {
 toml::array array_of(const std::vector<Vec2>& points) {
   toml::array a;
   for (const Vec2& p : points) a.push_back(as_array(p));
   return a;
 }
+}  // namespace
 
-/// A box side must fall on a cell edge of the lattice, origin + (i + ½)Δp, so that the box holds
-/// whole cells: its mass is then exactly ρ × its area.
 void check_on_cell_edge(const std::string& where, std::string_view key, char axis, double value, double origin,
                         double dx) {
   const double cells = (value - origin) / dx - 0.5, nearest = std::round(cells);
@@ -90,6 +88,8 @@ void check_on_cell_edge(const std::string& where, std::string_view key, char axi
                        " m); the nearest are " + format_number(below) + " and " + format_number(above) +
                        " m (or move [scene] lattice_origin, or take another particle_spacing)");
 }
+
+namespace {
 
 /// A `shape = "particles"` entry: its `file` (relative to the scene file's folder; recorded as an
 /// absolute path, so that a checkpoint's scene finds it), one region per material it names.

@@ -38,6 +38,15 @@ inline Vec2 read_vector(const toml::node& node, const std::string& where, std::s
   return read_vector_of<2>(node, where, unit);
 }
 
+/// The `points` of a table at `where`: at least `least` [x, y] points (m); throws ParameterError otherwise.
+std::vector<Vec2> points_of(const toml::table& table, const std::string& where, std::size_t least);
+
+/// A box side must fall on a cell edge of the lattice, origin + (i + ½)Δp along `axis`, so that the
+/// box holds whole cells: its mass is then exactly ρ × its area (its volume in space). Throws
+/// ParameterError naming `where`, `key` and the nearest cell edges otherwise.
+void check_on_cell_edge(const std::string& where, std::string_view key, char axis, double value, double origin,
+                        double dx);
+
 /// The largest coordinate magnitude accepted (m): beyond it a scene is a typo.
 inline constexpr double kLargestCoordinate = 1e4;
 

@@ -32,6 +32,7 @@ std::string energy_scope(const Scene&) { return "per metre of thickness (plane s
 std::string energy_scope(const Scene3& scene) {
   const Geometry3& g = scene.geometry;
   if (g.shape == Geometry3::Shape::Slab) return "of the slab simulated";
+  if (g.shape == Geometry3::Shape::Regions) return "of the soil simulated";
   if (g.azimuth_span_deg >= 360.0) return "of the whole column";
   return g.azimuth_span_deg >= 180.0 ? "of the half column simulated (x2 for the whole column)"
                                      : "of the quarter column simulated (x4 for the whole column)";

@@ -151,7 +151,7 @@ TEST_CASE("every refusal of a 3D scene names its key", "[scene3d]") {
     text.replace(text.find("column_radius = 0.04"), 20, "column_radius = 0.042");
     require_refusal([&] { (void)parse_scene_3d(text, "small.toml"); }, {"small.toml", "column_radius"});
   }
-  SECTION("[[regions]], [deposit] and several materials are 2D scenes' only") {
+  SECTION("[[regions]] and a shorthand exclude each other; a shorthand takes no [deposit]") {
     require_refusal(
         [] { (void)parse_scene_3d(std::string(kSmallColumn) + "[[regions]]\nshape = \"box\"\n", "s.toml"); },
         {"s.toml", "regions"});
