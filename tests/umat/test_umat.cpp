@@ -172,7 +172,7 @@ TEST_CASE("Bad UMAT tables are refused when read, naming the key", "[umat]") {
   refused(
       "symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1.0e6, 0.3]\nstate_variables = "
       "2\ninitial_state = [1.0]\n",
-      "initial_state: has 1 values, state_variables = 2");
+      "test.toml: [material] initial_state: has 1 values (allowed: 0 or 2 values, as state_variables = 2)");
   refused("symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1.0e6, 0.3]\nstress_unit = \"GPa\"\n",
           "stress_unit");
   refused("symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1.0e6, 0.3]\nstate_variables = 100000\n",
