@@ -21,18 +21,10 @@ UmatModel read_umat(const TableReader& table) {
 }  // namespace
 
 namespace {
-template <class Params>
-std::vector<std::string_view> keys_of() {
-  if constexpr (requires { Params::kKeys; })
-    return {std::begin(Params::kKeys), std::end(Params::kKeys)};
-  else
-    return field_keys<Params>();
-}
-
 template <class... Model>
 std::vector<std::string_view> keys_of_models(const std::variant<Model...>*) {
   std::vector<std::string_view> keys{"model"};
-  for (const std::vector<std::string_view>& model_keys : {keys_of<typename Model::Params>()...})
+  for (const std::vector<std::string_view>& model_keys : {field_keys<typename Model::Params>()...})
     for (const std::string_view key : model_keys)
       if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
   return keys;
@@ -62,18 +54,42 @@ Material read_material(const TableReader& table) {
   // Keys of other models are allowed (one scene can switch models with --set) but said to be unused.
   const std::span<const std::string_view> known = material_keys();
   for (const std::string& key : table.unread_keys()) {
-    if (std::find(known.begin(), known.end(), key) == known.end()) table.fail(key, "is not a known key");
+    if (std::find(known.begin(), known.end(), key) == known.end()) table.fail_unknown(key, known);
     std::cerr << "note: " << table.source() << ": [" << table.table_name() << "] " << key
               << " is not used by " << model << '\n';
   }
   return material;
 }
 
-Material load_material(const std::string& path) {
+std::string material_table_name(std::string_view name) {
+  return name.empty() ? "material" : "materials." + std::string(name);
+}
+
+const toml::table& material_table(const toml::table& root, const std::string& path, std::string_view name) {
+  const toml::table* named = root["materials"].as_table();
+  std::string names;  // "clay, sand": the scene's named materials
+  if (named)
+    for (const auto& [key, node] : *named)
+      if (node.is_table()) names.append(names.empty() ? "" : ", ").append(key.str());
+  if (name.empty()) {
+    if (const toml::table* table = root["material"].as_table()) return *table;
+    if (names.empty()) throw ParameterError(path + ": no [material] table");
+    const std::string first = names.substr(0, names.find(','));
+    throw ParameterError(path + ": no [material] table; it is a scene of named materials (" + names +
+                         "): pick one with --material NAME, e.g. --material " + first);
+  }
+  if (const toml::table* table = named ? (*named)[name].as_table() : nullptr) return *table;
+  throw ParameterError("--material " + std::string(name) + ": " + path + " has no [materials." +
+                       std::string(name) + "] table (" +
+                       (names.empty()
+                            ? "it names no materials; leave out --material to read its [material] table"
+                            : "its named materials: " + names) +
+                       ")");
+}
+
+Material load_material(const std::string& path, std::string_view name) {
   const toml::table root = parse_toml_file(path);
-  const toml::table* table = root["material"].as_table();
-  if (!table) throw ParameterError(path + ": no [material] table");
-  return read_material(TableReader(*table, path, "material"));
+  return read_material(TableReader(material_table(root, path, name), path, material_table_name(name)));
 }
 
 Material with_integrator(const Material& material, Integrator integrator) {

@@ -23,15 +23,23 @@ static_assert(ConstitutiveModel<LinearElastic> && ConstitutiveModel<UmatModel>);
 static_assert(PlasticModel<DruckerPrager> && PlasticModel<ModifiedCamClay> && PlasticModel<MohrCoulomb>);
 
 /// Every key a `[material]` table may hold, whichever model it selects: `model`, then the keys of each
-/// model's Params (its fields() list; a UMAT's UmatParams::kKeys) not listed before, in the order of
+/// model's Params (its fields() list) not listed before, in the order of
 /// the models in Material.
 std::span<const std::string_view> material_keys();
 
 /// Builds the model that `table` selects with its `model` key, validating every parameter. Keys of
 /// other models are reported on stderr as ignored; keys no model knows are errors.
 Material read_material(const TableReader& table);
-/// Reads the `[material]` table of a TOML file (a material file or a scene file).
-Material load_material(const std::string& path);
+/// The dotted name of the table that holds a file's material: "material", or "materials.NAME" for a
+/// scene's named material `name` (`--material NAME`).
+std::string material_table_name(std::string_view name);
+/// The table `material_table_name(name)` of `root`, read from `path`. Without it, a ParameterError
+/// naming the file and, for a scene of named materials, the names it holds and `--material NAME`,
+/// the option that picks one.
+const toml::table& material_table(const toml::table& root, const std::string& path, std::string_view name);
+/// Reads the `[material]` table of a TOML file (a material file or a scene file), or a scene's
+/// `[materials.NAME]` for `name`.
+Material load_material(const std::string& path, std::string_view name = "");
 
 /// A copy of `material` that integrates its stress with `integrator` (models without a plastic
 /// update, i.e. linear elasticity, are returned unchanged).

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace soilsph {
@@ -48,6 +49,17 @@ std::string toml_quoted(std::string_view text) {
   out << toml::value<std::string>(std::string(text));
   return out.str();
 }
+/// "text" in messages, as the file holds it.
+std::string double_quoted(std::string_view text) {
+  std::string out(1, '"');
+  return out.append(text).append(1, '"');
+}
+/// [1, 0.5]: numbers as a TOML array that reads back to them.
+std::string toml_array(const std::vector<double>& values) {
+  std::string list;
+  for (const double v : values) list.append(list.empty() ? "" : ", ").append(exact_number(v));
+  return "[" + list + "]";
+}
 /// "a", "b", "c": the allowed names in messages.
 std::string quoted_list(std::span<const std::string_view> names) {
   std::string list;
@@ -55,6 +67,22 @@ std::string quoted_list(std::span<const std::string_view> names) {
   return list;
 }
 }  // namespace
+
+std::string Length::describe() const {
+  const auto characters = [](std::size_t n) {
+    return std::to_string(n) + (n == 1 ? " character" : " characters");
+  };
+  if (max == std::numeric_limits<std::size_t>::max())
+    return min == 0 ? "any text" : "at least " + characters(min);
+  if (min == 0) return "at most " + characters(max);
+  return characters(min) + " to " + characters(max);
+}
+
+std::string Count::describe() const {
+  if (!none_or) return "any number of values";
+  return "0 or " + std::to_string(*none_or) + " values, as " + std::string(set_by) + " = " +
+         std::to_string(*none_or);
+}
 
 bool Range::contains(double x) const {
   if (!std::isfinite(x)) return false;
@@ -127,6 +155,51 @@ void FieldChecker::number(std::string_view key, const double& field, Range range
                        (unit.empty() ? "" : " ") + std::string(unit) + ")");
 }
 
+void FieldChecker::fail(std::string_view key, std::string_view value, std::string_view what) const {
+  throw ParameterError(std::string(owner_) + " parameters: " + std::string(key) + " = " + std::string(value) +
+                       " " + std::string(what));
+}
+
+void FieldChecker::text_or(std::string_view key, const std::string& field, Length length) const {
+  if (!length.contains(field.size()))
+    fail(key, double_quoted(field),
+         "has " + std::to_string(field.size()) + " characters (allowed: " + length.describe() + ")");
+}
+
+void FieldChecker::file(std::string_view key, const std::string& field) const {
+  if (!std::filesystem::is_regular_file(field)) fail(key, double_quoted(field), "is not a file");
+}
+
+void FieldChecker::integer_or(std::string_view key, const int& field, int lo, int hi) const {
+  if (field < lo || field > hi)
+    fail(key, std::to_string(field),
+         "is out of range (allowed: " + std::to_string(lo) + " <= value <= " + std::to_string(hi) + ")");
+}
+
+void FieldChecker::numbers_or(std::string_view key, const std::vector<double>& field, Range range,
+                              Count count, Listed) const {
+  if (!count.contains(field.size()))
+    fail(key, toml_array(field),
+         "has " + std::to_string(field.size()) + " values (allowed: " + count.describe() + ")");
+  for (std::size_t k = 0; k < field.size(); ++k)
+    if (!range.contains(field[k]))
+      fail(key, toml_array(field),
+           "has element " + std::to_string(k + 1) + " = " + format_number(field[k]) +
+               " out of range (allowed: " + range.describe() + ")");
+}
+
+void FieldReader::numbers_or(std::string_view key, std::vector<double>& field, Range range, Count count,
+                             Listed) const {
+  field = table_.numbers_or(key, field, range);
+  if (!count.contains(field.size()))
+    table_.fail(key, "has " + std::to_string(field.size()) + " values (allowed: " + count.describe() + ")");
+}
+
+void FieldDescriber::numbers_or(std::string_view key, const std::vector<double>& field, Range, Count,
+                                Listed listed) const {
+  add(key, toml_array(field), listed);
+}
+
 double TableReader::number_or(std::string_view key, double fallback, Range range,
                               std::string_view unit) const {
   if (has(key)) return number(key, range, unit);
@@ -186,6 +259,28 @@ std::string TableReader::string_or(std::string_view key, std::string_view fallba
   if (!value) fail(key, "must be a string");
   record(key, *value);
   return *value;
+}
+
+std::string TableReader::text_or(std::string_view key, std::string_view fallback, Length length) const {
+  const std::string text = string_or(key, fallback);
+  if (!length.contains(text.size()))
+    fail_value(key, double_quoted(text),
+               "has " + std::to_string(text.size()) + " characters (allowed: " + length.describe() + ")");
+  return text;
+}
+
+std::string TableReader::file(std::string_view key) const {
+  const toml::node* node = find(key);
+  if (!node) fail(key, "is missing (allowed: the path of a file, absolute or relative to this file)");
+  const std::optional<std::string> text = node->value_exact<std::string>();
+  if (!text || text->empty()) fail(key, "must be the path of a file, absolute or relative to this file");
+  record(key, *text);
+  namespace fs = std::filesystem;
+  const fs::path path =
+      fs::path(*text).is_absolute() ? fs::path(*text) : fs::path(source_).parent_path() / *text;
+  if (!fs::is_regular_file(path))
+    fail_value(key, double_quoted(*text), "is not a file (" + path.string() + ")");
+  return fs::absolute(path).lexically_normal().string();
 }
 
 std::vector<double> TableReader::numbers_or(std::string_view key, std::span<const double> fallback,
@@ -276,8 +371,51 @@ std::vector<std::string> TableReader::unread_keys() const {
   return keys;
 }
 
+void TableReader::fail_unknown(std::string_view key, std::span<const std::string_view> known) const {
+  const std::optional<std::string_view> nearest = nearest_key(key, known);
+  fail(key, "is not a known key" +
+                (nearest ? " (did you mean \"" + std::string(*nearest) + "\"?)" : std::string()));
+}
+
 void TableReader::reject_unknown_keys() const {
-  for (const std::string& key : unread_keys()) fail(key, "is not a known key");
+  const std::vector<std::string> unknown = unread_keys();
+  if (unknown.empty()) return;
+  // Every key a reader asks for (read, defaulted or accepted) is a known one.
+  const std::vector<std::string_view> known(used_.begin(), used_.end());
+  fail_unknown(unknown.front(), known);
+}
+
+namespace {
+/// The optimal string alignment distance: the fewest insertions, deletions, substitutions and
+/// swaps of two neighbouring characters that turn `a` into `b` (Wagner–Fischer's table with
+/// Damerau's transposition, no substring edited twice).
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitution = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + substitution});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
+}
+}  // namespace
+
+std::optional<std::string_view> nearest_key(std::string_view key, std::span<const std::string_view> known) {
+  std::optional<std::string_view> nearest;
+  std::size_t best = std::min<std::size_t>(2, key.size() / 3);
+  for (const std::string_view candidate : known) {
+    const std::size_t distance = edit_distance(key, candidate);
+    if (distance <= best && (!nearest || distance < best)) {
+      nearest = candidate;
+      best = distance;
+    }
+  }
+  return nearest;
 }
 
 toml::table parse_toml_file(const std::string& path) {

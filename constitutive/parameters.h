@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <set>
 #include <span>
 #include <stdexcept>
@@ -55,6 +56,32 @@ struct Range {
   static constexpr double kInf = std::numeric_limits<double>::infinity();
 };
 
+/// The admissible length of a string field, in characters.
+struct Length {
+  std::size_t min = 0;
+  std::size_t max = std::numeric_limits<std::size_t>::max();
+
+  static Length any() { return {}; }
+  static Length at_least(std::size_t n) { return {n}; }
+  static Length at_most(std::size_t n) { return {0, n}; }
+
+  bool contains(std::size_t n) const { return n >= min && n <= max; }
+  std::string describe() const;  ///< e.g. "at most 80 characters"
+};
+
+/// The admissible number of elements of an array field: any, or none or exactly the value of
+/// another key (`set_by`, named in messages).
+struct Count {
+  std::optional<std::size_t> none_or;  ///< unset: any number
+  std::string_view set_by;
+
+  static Count any() { return {}; }
+  static Count none_or_exactly(std::size_t n, std::string_view set_by) { return {n, set_by}; }
+
+  bool contains(std::size_t n) const { return !none_or || n == 0 || n == *none_or; }
+  std::string describe() const;  ///< e.g. "0 or 4 values, as state_variables = 4"
+};
+
 /// Reads the keys of one table (e.g. `[material]`) with validation.
 class TableReader {
  public:
@@ -82,6 +109,11 @@ class TableReader {
   }
   /// An optional string of any content; `fallback` when the key is absent.
   std::string string_or(std::string_view key, std::string_view fallback) const;
+  /// An optional string of `length` characters; `fallback` when the key is absent.
+  std::string text_or(std::string_view key, std::string_view fallback, Length length) const;
+  /// A required path of an existing file, absolute or relative to the directory of the table's
+  /// file; returned absolute and normalised.
+  std::string file(std::string_view key) const;
   /// An optional array of numbers, each in `range`; `fallback` when the key is absent. An element
   /// that is not a number or is out of range is an error naming its position.
   std::vector<double> numbers_or(std::string_view key, std::span<const double> fallback, Range range) const;
@@ -94,8 +126,11 @@ class TableReader {
                                       std::span<const std::string_view> allowed) const;
   /// Marks keys as known without reading them (for keys that belong to another consumer).
   void accept(std::initializer_list<std::string_view> keys) const;
-  /// Throws for any key of the table that was neither read nor accepted.
+  /// Throws for any key of the table that was neither read nor accepted, naming the nearest known
+  /// key (nearest_key) where one is close.
   void reject_unknown_keys() const;
+  /// Throws "is not a known key" for `key`, with the nearest of `known` where one is close.
+  [[noreturn]] void fail_unknown(std::string_view key, std::span<const std::string_view> known) const;
   /// The keys of the table that were neither read nor accepted, in table order.
   std::vector<std::string> unread_keys() const;
   /// Throws a ParameterError about `key` with `what` as the reason.
@@ -184,6 +219,22 @@ class FieldReader {
                  Listed = Listed::Always) const {
     field = *parse_name(table, table_.choice_or(key, name_of(table, field), names_of(table)));
   }
+  /// An optional string of `length` characters; the field's current value is the default.
+  void text_or(std::string_view key, std::string& field, Length length) const {
+    field = table_.text_or(key, field, length);
+  }
+  /// A required path of an existing file, relative to the table's file; the field holds it absolute.
+  void file(std::string_view key, std::string& field) const { field = table_.file(key); }
+  /// An optional integer in [lo, hi]; the field's current value is the default.
+  void integer_or(std::string_view key, int& field, int lo, int hi) const {
+    field = static_cast<int>(table_.integer_or(key, field, lo, hi));
+  }
+  /// An optional array of numbers, each in `range`, as many as `count` allows; the field's current
+  /// value is the default.
+  void numbers_or(std::string_view key, std::vector<double>& field, Range range, Count count = Count::any(),
+                  Listed = Listed::Always) const;
+  /// An optional true or false; the field's current value is the default.
+  void boolean_or(std::string_view key, bool& field) const { field = table_.boolean_or(key, field); }
 
  private:
   const TableReader& table_;
@@ -207,8 +258,18 @@ class FieldChecker {
   /// An enum value is always one of its names.
   template <class Enum, std::size_t N>
   void choice_or(std::string_view, const Enum&, const EnumTable<Enum, N>&, Listed = Listed::Always) const {}
+  void text_or(std::string_view key, const std::string& field, Length length) const;
+  /// The path must name an existing file (a struct built in code holds it as the file system reads it).
+  void file(std::string_view key, const std::string& field) const;
+  void integer_or(std::string_view key, const int& field, int lo, int hi) const;
+  void numbers_or(std::string_view key, const std::vector<double>& field, Range range,
+                  Count count = Count::any(), Listed = Listed::Always) const;
+  /// A bool is always true or false.
+  void boolean_or(std::string_view, const bool&) const {}
 
  private:
+  [[noreturn]] void fail(std::string_view key, std::string_view value, std::string_view what) const;
+
   std::string_view owner_;
 };
 
@@ -237,9 +298,25 @@ class FieldDescriber {
                  Listed listed = Listed::Always) const {
     add(key, quoted(name_of(table, field)), listed);
   }
+  void text_or(std::string_view key, const std::string& field, Length) const {
+    add(key, quoted(field), Listed::Always);
+  }
+  void file(std::string_view key, const std::string& field) const { add(key, quoted(field), Listed::Always); }
+  void integer_or(std::string_view key, const int& field, int, int) const {
+    add(key, std::to_string(field), Listed::Always);
+  }
+  /// As a TOML array: [1, 0.5].
+  void numbers_or(std::string_view key, const std::vector<double>& field, Range, Count = Count::any(),
+                  Listed listed = Listed::Always) const;
+  void boolean_or(std::string_view key, const bool& field) const {
+    add(key, field ? "true" : "false", Listed::Always);
+  }
 
  private:
-  static std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
+  static std::string quoted(std::string_view text) {
+    std::string out(1, '"');  // appended, not `"\"" + ...`: GCC 12 warns falsely of that (-Wrestrict)
+    return out.append(text).append(1, '"');
+  }
   void add(std::string_view key, std::string value, Listed listed) const;
 
   KeyValues& out_;
@@ -251,20 +328,40 @@ class KeyLister {
  public:
   explicit KeyLister(std::vector<std::string_view>& keys) : keys_(keys) {}
   const KeyLister& when(bool) const { return *this; }
-  template <class Field, class... Rest>
-  void number(std::string_view key, const Field&, const Rest&...) const {
+  template <class... Rest>
+  void number(std::string_view key, const Rest&...) const {
     keys_.push_back(key);
   }
-  template <class Field, class... Rest>
-  void number_or(std::string_view key, const Field&, const Rest&...) const {
+  template <class... Rest>
+  void number_or(std::string_view key, const Rest&...) const {
     keys_.push_back(key);
   }
-  template <class Field, class... Rest>
-  void number_if_given(std::string_view key, const Field&, const Rest&...) const {
+  template <class... Rest>
+  void number_if_given(std::string_view key, const Rest&...) const {
     keys_.push_back(key);
   }
-  template <class Field, class... Rest>
-  void choice_or(std::string_view key, const Field&, const Rest&...) const {
+  template <class... Rest>
+  void choice_or(std::string_view key, const Rest&...) const {
+    keys_.push_back(key);
+  }
+  template <class... Rest>
+  void text_or(std::string_view key, const Rest&...) const {
+    keys_.push_back(key);
+  }
+  template <class... Rest>
+  void file(std::string_view key, const Rest&...) const {
+    keys_.push_back(key);
+  }
+  template <class... Rest>
+  void integer_or(std::string_view key, const Rest&...) const {
+    keys_.push_back(key);
+  }
+  template <class... Rest>
+  void numbers_or(std::string_view key, const Rest&...) const {
+    keys_.push_back(key);
+  }
+  template <class... Rest>
+  void boolean_or(std::string_view key, const Rest&...) const {
     keys_.push_back(key);
   }
 
@@ -306,6 +403,11 @@ std::vector<std::string_view> field_keys() {
   Params{}.fields(KeyLister(keys));
   return keys;
 }
+
+/// The one of `known` nearest to `key` by edit distance (insertions, deletions, substitutions and
+/// swaps of neighbours), if it is close: at most 2 edits and at most a third of the key's length
+/// (so "fricton_angle" finds "friction_angle", while "xyz" finds nothing).
+std::optional<std::string_view> nearest_key(std::string_view key, std::span<const std::string_view> known);
 
 /// Parses a TOML file, turning syntax errors into ParameterError with file, line and column.
 toml::table parse_toml_file(const std::string& path);

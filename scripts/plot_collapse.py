@@ -4,8 +4,10 @@
     plot_collapse.py DIR [--compare DIR2 ...] [--colour layer|material] [--labels LABEL ...]
 
 reads DIR/frames.h5 and DIR/summary.json (docs/reference/output-formats.md) and writes
-  DIR/velocity_t0.05.png ... _t0.20.png  velocity magnitude at the frame nearest each time (paper Fig. 4)
-  DIR/velocity.png                        the four snapshots together (2 x 2)
+  DIR/velocity_t0.05.png ... _t0.20.png  velocity magnitude at the frame nearest each time (paper Fig. 4);
+                                          a run that ends sooner gets four frames spread over it instead
+                                          (the last its last, each frame once), named by their times
+  DIR/velocity.png                        the snapshots together (2 x 2)
   DIR/deposit.png                         final deposit in horizontal layers of two alternating colours
                                           (paper Fig. 5); with --colour material, one colour per
                                           material (the field `material`, names from summary.json)
@@ -114,9 +116,6 @@ class Run:
                 return True
         return False
 
-    def nearest(self, time):
-        return int(np.argmin(np.abs(self.times - time)))
-
     def estimate_spacing(self):
         """Initial spacing from the first frame: the median gap between sorted distinct x."""
         x = np.unique(np.round(self.h5[self.names[0]]["position"][:, 0], 12))
@@ -206,24 +205,49 @@ def draw_speed(ax, run, frame, limits, vmax):
                       zorder=2)
 
 
+def snapshot_frames(times):
+    """The frames of the velocity snapshots as (name, index), in time order, each frame once: the frames
+    nearest the paper's times (Fig. 4, named 0.05 ... 0.20) when the run reaches the last of them, else
+    those nearest four times spread evenly up to the run's end, named by their own times."""
+    times = np.asarray(times)
+    end = float(times[-1])
+    interval = end / max(len(times) - 1, 1)
+    reaches = end >= SNAPSHOT_TIMES[-1] - 0.5 * interval
+    count = len(SNAPSHOT_TIMES)
+    wanted = SNAPSHOT_TIMES if reaches else [end * (k + 1) / count for k in range(count)]
+    indices, labels = [], []
+    for t in wanted:
+        index = int(np.argmin(np.abs(times - t)))
+        if index not in indices:
+            indices.append(index)
+            labels.append(t if reaches else float(times[index]))
+    digits = 2  # as many as the names need to differ
+    while len({f"{t:.{digits}f}" for t in labels}) < len(labels) and digits < 9:
+        digits += 1
+    return [(f"{t:.{digits}f}", index) for t, index in zip(labels, indices)]
+
+
 def plot_velocity(run):
-    indices = [run.nearest(t) for t in SNAPSHOT_TIMES]
+    snapshots = snapshot_frames(run.times)
+    indices = [index for _, index in snapshots]
     if run.lacks(("velocity", "speed"), indices, "velocity_t*.png and velocity.png"):
         return
     frames = [run.frame(i) for i in indices]
     limits = extent(frames + [run.frame(0), run.frame(len(run.names) - 1)], run.spacing)
-    vmax = max(max(float(f["speed"].max()) for f in frames), 1e-12)  # one colour scale for all four
-    for requested, frame in zip(SNAPSHOT_TIMES, frames):
+    vmax = max(max(float(f["speed"].max()) for f in frames), 1e-12)  # one colour scale for all
+    for (name, _), frame in zip(snapshots, frames):
         fig, ax = plt.subplots(figsize=(8, 4.5), dpi=150)
         points = draw_speed(ax, run, frame, limits, vmax)
         ax.set_title(f"{run.label}: velocity magnitude, t = {frame['time']:.3f} s")
         fig.colorbar(points, ax=ax, shrink=0.8, label="velocity magnitude (m/s)")
-        fig.savefig(run.dir / f"velocity_t{requested:.2f}.png", bbox_inches="tight")
+        fig.savefig(run.dir / f"velocity_t{name}.png", bbox_inches="tight")
         plt.close(fig)
     fig, axes = plt.subplots(2, 2, figsize=(13, 7.5), dpi=150, constrained_layout=True)
     for ax, frame in zip(axes.flat, frames):
         points = draw_speed(ax, run, frame, limits, vmax)
         ax.set_title(f"t = {frame['time']:.3f} s")
+    for ax in axes.flat[len(frames):]:  # a run of fewer frames than snapshots
+        ax.set_visible(False)
     fig.colorbar(points, ax=axes, shrink=0.8, label="velocity magnitude (m/s)")
     fig.suptitle(f"{run.label}: velocity magnitude")
     fig.savefig(run.dir / "velocity.png")
@@ -285,7 +309,7 @@ def plot_compare_velocity(runs):
     """The snapshots of every run side by side, one row per run, one colour scale for all."""
     rows = []
     for run in runs:
-        indices = [run.nearest(t) for t in SNAPSHOT_TIMES]
+        indices = [index for _, index in snapshot_frames(run.times)]
         if run.lacks(("velocity", "speed"), indices, "compare_velocity.png"):
             return
         rows.append([run.frame(i) for i in indices])
@@ -297,6 +321,8 @@ def plot_compare_velocity(runs):
         for c, frame in enumerate(row):
             points = draw_speed(axes[r, c], run, frame, limits, max(vmax, 1e-12))
             axes[r, c].set_title(f"{run.label}, t = {frame['time']:.3f} s", fontsize=9)
+        for ax in axes[r, len(row):]:  # a run of fewer frames than snapshots
+            ax.set_visible(False)
     fig.colorbar(points, ax=axes, shrink=0.8, label="velocity magnitude (m/s)")
     fig.savefig(runs[0].dir / "compare_velocity.png")
     plt.close(fig)

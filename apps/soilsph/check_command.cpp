@@ -67,6 +67,13 @@ void check_plane(const sph::Scene& scene) {
   const sph::SolverSetup setup = sph::make_solver_setup(scene);
   (void)scene_histories(scene, particles, setup);  // places the gauges, or refuses them
   print_costs(scene, scene.geometry.end_time, particles, setup, estimate);
+  // Not an error: a scene of regions runs without deposit measures, but a user who wants them learns
+  // it now rather than from the finished run's report.
+  if (!scene.deposit.defined)
+    std::cerr << "warning: " << scene.source
+              << ": no [deposit] table, so the run takes no deposit measures (runout, height, repose angle: "
+                 "null in summary.json); add a [deposit] table (origin and direction of the runout) to take "
+                 "them\n";
   std::cout << "\n# the scene as it would run, every key resolved\n" << sph::scene_toml(scene);
 }
 

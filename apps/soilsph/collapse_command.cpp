@@ -255,7 +255,7 @@ void report_results(const sph::Summary& summary, const sph::RunStatistics& stats
   print_deposit(summary, scene);
   std::cout << ", max speed at end " << summary.max_speed_end << " m/s, wall guard acted "
             << stats.guard_corrections << " times, " << stats.fallback_stress_updates
-            << " stress updates needed a fallback (stages/stress_update.h)\n"
+            << " stress updates needed a fallback (docs/method/sph.md)\n"
             << summary.wall_seconds << " s wall, " << summary.particle_steps_per_second
             << " particle-steps/s; output in " << dir.string() << "/\n";
 }

@@ -55,14 +55,18 @@ std::vector<fs::path> files_in(const char* folder, const char* extension) {
   return files;
 }
 
-/// The file's first line without its comment mark: every shipped file begins with a one-line
-/// description.
+/// The file's description: the first sentence of the comment it begins with, however many lines it
+/// takes (a line that breaks mid-sentence is not cut off there). Every shipped file begins with one.
 std::string description(const fs::path& file) {
   std::ifstream in(file);
-  std::string line;
-  if (!std::getline(in, line) || !line.starts_with('#')) return "(no description)";
-  const std::size_t text = line.find_first_not_of("# ");
-  return text == std::string::npos ? "(no description)" : line.substr(text);
+  std::string text, line;
+  while (!text.ends_with('.') && !text.ends_with('?') && !text.ends_with('!') && std::getline(in, line) &&
+         line.starts_with('#')) {
+    const std::size_t from = line.find_first_not_of("# ");
+    if (from == std::string::npos) break;  // an empty comment line ends the paragraph
+    text.append(text.empty() ? "" : " ").append(line, from);
+  }
+  return text.empty() ? "(no description)" : text;
 }
 
 void list_examples() {

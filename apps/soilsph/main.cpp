@@ -56,6 +56,17 @@ std::string one_line(std::string message) {
   return message.substr(0, kMost - 200) + " […" + std::to_string(message.size() - kMost + 100) + " characters cut…] " +
          message.substr(message.size() - 100);
 }
+/// Where a bad command line is explained: the help of the deepest command it named (`soilsph
+/// bench point --help`), or the top-level help when it named none.
+std::string help_hint(const CLI::App& app) {
+  std::string command = "soilsph";
+  for (const CLI::App* at = &app; !at->get_subcommands().empty();) {
+    at = at->get_subcommands().front();
+    command += " " + at->get_name();
+  }
+  return command == "soilsph" ? "soilsph --help lists the commands and options"
+                              : command + " --help lists its options";
+}
 }  // namespace soilsph::cli
 
 using soilsph::cli::one_line;
@@ -92,7 +103,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help and --version
     // A bad command line is an input error: one `error:` line like every other, exit 2.
-    std::cerr << one_line("error: " + std::string(e.what()) + " (soilsph --help lists the commands and options)")
+    std::cerr << one_line("error: " + std::string(e.what()) + " (" + soilsph::cli::help_hint(app) + ")")
               << '\n';
     return 2;
   } catch (const soilsph::ParameterError& e) {

@@ -67,8 +67,14 @@ bool report_tangent_check(const Material& material, const TangentCheckOptions& o
 void add_material_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("material", "Validate a [material] table and print the model's constants");
   auto path = std::make_shared<std::string>();
+  auto name = std::make_shared<std::string>();
   auto check = std::make_shared<TangentCheckOptions>();
-  cmd->add_option("FILE", *path, "TOML file with a [material] table")->required()->check(CLI::ExistingFile);
+  cmd->add_option("FILE", *path, "TOML file with a [material] table (a scene file works too)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--material", *name,
+                  "the material of a scene of named materials: its [materials.NAME] table")
+      ->type_name("NAME");
   cmd->add_flag("--check-tangent", check->enabled,
                 "compare the model's tangent (a UMAT's DDSDDE) with central differences of its update along "
                 "--test; exit status 1 if they differ by more than --tangent-tolerance");
@@ -93,15 +99,16 @@ void add_material_command(CLI::App& app) {
                                     "with --check-tangent: the largest relative error accepted")
                         ->capture_default_str()
                         ->check(in_range(Range::open(0.0, 1.0)));
-  cmd->callback([path, check, test, p_initial, strain_max, increments, tolerance] {
+  cmd->callback([path, name, check, test, p_initial, strain_max, increments, tolerance] {
     if (!check->enabled &&
         test->count() + p_initial->count() + strain_max->count() + increments->count() + tolerance->count() >
             0)
       throw ParameterError(
           "--test, --p-initial, --strain-max, --increments and --tangent-tolerance apply with "
           "--check-tangent only");
-    const Material material = load_material(*path);
-    std::cout << *path << ": " << model_name(material) << ", density " << density(material) << " kg/m^3\n";
+    const Material material = load_material(*path, *name);
+    std::cout << *path << (name->empty() ? "" : " [materials." + *name + "]") << ": " << model_name(material)
+              << ", density " << density(material) << " kg/m^3\n";
     std::visit([](const auto& m) { std::cout << m.describe_constants(); }, material);
     if (const double tau = viscoplastic_relaxation_time(material); tau > 0.0) {
       // What sets a viscoplastic deposit is the slow-flow viscosity G τ (docs/validation/resolution.md);

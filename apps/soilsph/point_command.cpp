@@ -23,6 +23,7 @@ namespace limits = verification::point_limits;
 
 struct PointOptions {
   std::string material_path;
+  std::string material_name;  ///< a scene's [materials.NAME]; empty: the [material] table
   std::string test;  ///< required unless the file is a programme
   std::string strain_path;
   double p_initial = 100e3;
@@ -69,20 +70,21 @@ std::string umat_tangent_report(const Material& material) {
                                " calls, where central differences of the update were used");
 }
 
-/// The [material] table of the file after the --set overrides, which may only address it.
+/// The [material] table of the file (or the scene's [materials.NAME] of --material) after the --set
+/// overrides, which may only address it.
 Material load_point_material(const PointOptions& o) {
   toml::table root = parse_toml_file(o.material_path);
+  const std::string table_name = material_table_name(o.material_name);
   for (const std::string& assignment : o.overrides) {
     const std::size_t dot = assignment.find('.');
-    if (dot < assignment.find('=') && assignment.compare(0, dot, "material") != 0)
-      throw ParameterError("--set " + assignment +
-                           ": soilsph point reads only the [material] table (use --set material.KEY=VALUE)");
+    if (dot < assignment.find('=') && !assignment.starts_with(table_name + "."))
+      throw ParameterError("--set " + assignment + ": soilsph point reads only the [" + table_name +
+                           "] table (use --set " + table_name + ".KEY=VALUE)");
     apply_override(root, assignment);
   }
-  const toml::table* table = root["material"].as_table();
-  if (!table) throw ParameterError(o.material_path + ": no [material] table");
+  const toml::table& table = material_table(root, o.material_path, o.material_name);
   const Material material = blaming_overrides(
-      o.overrides, [&] { return read_material(TableReader(*table, o.material_path, "material")); });
+      o.overrides, [&] { return read_material(TableReader(table, o.material_path, table_name)); });
   warn_if_rate_dependent(material, o.material_path);
   return with_tangent_option(o, material);
 }
@@ -235,6 +237,9 @@ void run_and_write(const PointOptions& o, const Material& material, const std::s
 }
 
 void run_programme_file(const PointOptions& o, bool options_given) {
+  if (!o.material_name.empty())
+    throw ParameterError("--material " + o.material_name + ": " + o.material_path +
+                         " is a programme: its `material` key names the material");
   if (options_given)
     throw ParameterError(
         o.material_path +
@@ -282,8 +287,10 @@ void run(const PointOptions& o, bool legs_given, bool test_options_given) {
     if (test.path == verification::LoadPath::StrainPath) throw ParameterError(e.what());
     throw ParameterError("--strain-max " + o.strain_max + ": " + e.what());
   }
-  run_and_write(o, material, o.material_path, programme, integrator, [&] {
-    return provenance(o, o.material_path, material, integrator,
+  const std::string source =
+      o.material_name.empty() ? o.material_path : o.material_path + " [materials." + o.material_name + "]";
+  run_and_write(o, material, source, programme, integrator, [&] {
+    return provenance(o, source, material, integrator,
                       "test: " + describe_test(test, test_and_strain_path(o).second));
   });
 }
@@ -300,6 +307,9 @@ void add_point_command(CLI::App& app) {
                   "TOML file with a [material] table (a scene file works too) run with --test")
       ->required()
       ->check(CLI::ExistingFile);
+  cmd->add_option("--material", o->material_name,
+                  "the material of a scene of named materials to test: its [materials.NAME] table")
+      ->type_name("NAME");
   auto* test = cmd->add_option("--test", o->test,
                                "triaxial-drained, triaxial-undrained, oedometer, isotropic, or strain-path "
                                "(with --strain-path FILE, or as strain-path:FILE); not with a programme");
@@ -342,7 +352,8 @@ void add_point_command(CLI::App& app) {
       ->check(CLI::IsMember({std::string(kUmatTangentNames[0]), std::string(kUmatTangentNames[1])}));
   cmd->add_option("--out", o->out, "output CSV (default: standard output)");
   cmd->add_option("--set", o->overrides,
-                  "override a material key, e.g. --set material.friction_angle=30 (repeatable)");
+                  "override a material key, e.g. --set material.friction_angle=30, or --set "
+                  "materials.NAME.friction_angle=30 with --material NAME (repeatable)");
   cmd->callback([o, strain_max, increments, test, strain_path, p_initial, ocr, integrator] {
     if (integrator->count() > 0) check_integrator(o->integrator);
     run(*o, strain_max->count() + increments->count() > 0,

@@ -36,7 +36,6 @@ using UmatFunction = void(double* stress, double* statev, double* ddsdde, double
 using DeclaredPropsFunction = int(const char* cmname, std::size_t cmname_length);
 }
 
-constexpr std::size_t kCmnameLength = 80;
 /// PNEWDT before each call: Abaqus sets it to a large value, which a UMAT may lower.
 constexpr double kLargePnewdt = 1e36;
 
@@ -102,32 +101,25 @@ double pascals_per(StressUnit unit) {
   return 1.0;
 }
 
+template <class Io>
+void UmatParams::fields(const Io& io) {
+  io.number("density", density, Range::positive(), "kg/m^3");
+  io.file("library", library);
+  io.text_or("symbol", symbol, Length::at_least(1));
+  io.text_or("name", name, Length::at_most(kUmatNameLength));
+  io.numbers_or("props", props, Range{});
+  io.integer_or("state_variables", state_variables, 0, kMaxStateVariables);
+  io.numbers_or("initial_state", initial_state, Range{},
+                Count::none_or_exactly(static_cast<std::size_t>(state_variables), "state_variables"),
+                Listed::WhenSet);
+  io.choice_or("stress_unit", stress_unit, kStressUnitTable);
+  io.boolean_or("thread_safe", thread_safe);
+}
+template void UmatParams::fields(const FieldDescriber&);
+template void UmatParams::fields(const KeyLister&);
+
 UmatParams UmatParams::read(const TableReader& t) {
-  UmatParams p;
-  const std::string library = t.string_or("library", "");
-  if (library.empty())
-    t.fail("library", "is missing (the path of the shared library, relative to this file)");
-  namespace fs = std::filesystem;
-  const fs::path path =
-      fs::path(library).is_absolute() ? fs::path(library) : fs::path(t.source()).parent_path() / library;
-  if (!fs::is_regular_file(path))
-    t.fail_value("library", "\"" + library + "\"", "is not a file (" + path.string() + ")");
-  p.library = fs::absolute(path).lexically_normal().string();
-  p.symbol = t.string_or("symbol", p.symbol);
-  if (p.symbol.empty()) t.fail("symbol", "must not be empty (e.g. \"umat_\")");
-  p.name = t.string_or("name", "");
-  if (p.name.size() > kCmnameLength) t.fail("name", "is longer than CMNAME's 80 characters");
-  p.props = t.numbers_or("props", {}, Range{});
-  p.state_variables = static_cast<int>(t.integer_or("state_variables", 0, 0, kMaxStateVariables));
-  p.initial_state = t.numbers_or("initial_state", {}, Range{});
-  if (!p.initial_state.empty() && p.initial_state.size() != static_cast<std::size_t>(p.state_variables))
-    t.fail("initial_state", "has " + std::to_string(p.initial_state.size()) +
-                                " values, state_variables = " + std::to_string(p.state_variables));
-  FieldReader io(t);
-  io.choice_or("stress_unit", p.stress_unit, kStressUnitTable);
-  io.number("density", p.density, Range::positive(), "kg/m^3");
-  p.thread_safe = t.boolean_or("thread_safe", p.thread_safe);
-  return p;
+  return read_fields<UmatParams>(t);
 }
 
 struct UmatModel::Outcome {
@@ -136,22 +128,13 @@ struct UmatModel::Outcome {
   double pnewdt;
 };
 
-UmatModel::UmatModel(const Params& params) : params_(params) {
-  if (params_.state_variables < 0 || params_.state_variables > kMaxStateVariables)
-    throw ParameterError("state_variables = " + std::to_string(params_.state_variables) +
-                         " is out of range (allowed: 0 <= value <= " + std::to_string(kMaxStateVariables) +
-                         "; soilsph carries at most SOILSPH_MAX_STATE_VARIABLES, set when it is configured)");
-  if (!params_.initial_state.empty() &&
-      params_.initial_state.size() != static_cast<std::size_t>(params_.state_variables))
-    throw ParameterError("initial_state has " + std::to_string(params_.initial_state.size()) +
-                         " values, state_variables = " + std::to_string(params_.state_variables));
-  if (!(params_.density > 0.0)) throw ParameterError("density must be > 0 kg/m^3");
+UmatModel::UmatModel(const Params& params) : params_(validated(params, kName)) {
   library_ = UmatLibrary::open(params_.library, params_.symbol);
   install_umat_crash_guard();
   if (auto* declared = library_->declared_props()) {
     std::string cmname = params_.name;
-    cmname.resize(kCmnameLength, ' ');
-    const int n = declared(cmname.data(), kCmnameLength);
+    cmname.resize(kUmatNameLength, ' ');
+    const int n = declared(cmname.data(), kUmatNameLength);
     if (n < 0)
       throw ParameterError("name = \"" + params_.name + "\" is not a material " + params_.library + " knows");
     if (static_cast<std::size_t>(n) != params_.props.size())
@@ -225,7 +208,7 @@ UmatModel::Outcome UmatModel::call(const State& state, const Vec6& strain_increm
   const int noel = where.element, npt = where.point, layer = 1, kspt = 1;
   const int kstep[4] = {1, 1, 0, 0};  // step 1, static procedure, NLGEOM off, no linear perturbation
   const int kinc = from.umat.increment + 1;
-  char cmname[kCmnameLength];
+  char cmname[kUmatNameLength];
   std::fill(std::begin(cmname), std::end(cmname), ' ');
   std::copy(params_.name.begin(), params_.name.end(), cmname);
 
@@ -234,7 +217,7 @@ UmatModel::Outcome UmatModel::call(const State& state, const Vec6& strain_increm
                          &drpldt, stran.data(), dstran.data(), time, &dtime, &temp, &dtemp, predef, dpred,
                          cmname, &ndi, &nshr, &ntens, &nstatv, props, &nprops, where.coordinates.data(),
                          rotation.data(), &pnewdt, &celent, dfgrd0.data(), dfgrd1.data(), &noel, &npt, &layer,
-                         &kspt, kstep, &kinc, kCmnameLength);
+                         &kspt, kstep, &kinc, kUmatNameLength);
   };
   const UmatCallSite site{.library = library_->path().c_str(),
                           .symbol = library_->symbol().c_str(),

@@ -28,6 +28,9 @@
 
 namespace soilsph {
 
+/// CMNAME's length: a UMAT's material name is blank-padded to it in the call.
+inline constexpr std::size_t kUmatNameLength = 80;
+
 /// Halvings of an increment a UMAT may ask for with PNEWDT < 1 (down to 2⁻¹⁰ of it).
 inline constexpr int kMaxUmatHalvings = 10;
 
@@ -80,9 +83,11 @@ struct UmatParams {
   UmatTangent tangent = UmatTangent::Ddsdde;
 
   static UmatParams read(const TableReader& table);
-  /// The keys read() reads, in the order results list them.
-  static constexpr std::string_view kKeys[] = {"density", "library", "symbol", "name", "props",
-                                               "state_variables", "initial_state", "stress_unit", "thread_safe"};
+  /// Every key of a `[material]` table with its allowed values and default, read, checked,
+  /// described or listed by `io` (FieldReader, FieldChecker, FieldDescriber, KeyLister), in the
+  /// order results list them. `tangent` is no key: `soilsph point --tangent` sets it.
+  template <class Io>
+  void fields(const Io& io);
 };
 
 class UmatLibrary;

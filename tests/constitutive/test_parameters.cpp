@@ -98,7 +98,7 @@ TEST_CASE("invalid parameters are rejected with file, key and range", "[paramete
       {kDruckerPrager + "viscoplastic_relaxation_time = 1e4\n",
        "[material] viscoplastic_relaxation_time = 10000 is out of range (allowed: 0 <= value <= 1000 s)"},
       {kDruckerPrager + "frictoin_angle = 30.0\n",
-       "case.toml: [material] frictoin_angle: is not a known key"},
+       "case.toml: [material] frictoin_angle: is not a known key (did you mean \"friction_angle\"?)"},
   };
   for (const Case& c : cases) {
     INFO(c.text);
@@ -203,7 +203,8 @@ TEST_CASE("a bad value given with --set is blamed on the option, not on the file
       Contains("--set material.model=cam-clay: [material] model = \"cam-clay\" is not allowed"));
   CHECK_THROWS_WITH(
       read("material.frictoin_angle=30"),
-      Contains("--set material.frictoin_angle=30: [material] frictoin_angle: is not a known key"));
+      Contains("--set material.frictoin_angle=30: [material] frictoin_angle: is not a known key (did you "
+               "mean \"friction_angle\"?)"));
   // A value the file holds is still blamed on the file when another key was overridden.
   CHECK_THROWS_WITH(read("material.poisson_ratio=0.7"), Contains("--set material.poisson_ratio=0.7"));
   toml::table root =
@@ -424,4 +425,121 @@ TEST_CASE("a material that sets every key of its model is described with every k
     const auto keys = material_keys();
     CHECK(std::find(keys.begin(), keys.end(), key) != keys.end());
   }
+}
+
+namespace {
+enum class Shade { Light, Dark };
+constexpr auto kShadeTable = enum_table<Shade>({{Shade::Light, "light"}, {Shade::Dark, "dark"}});
+
+/// A table of every kind of field, each with the house messages.
+struct Gadget {
+  std::string label = "g";
+  int count = 2;
+  std::vector<double> weights;
+  bool enabled = false;
+  Shade shade = Shade::Light;
+
+  template <class Io>
+  void fields(const Io& io) {
+    io.text_or("label", label, Length::at_most(4));
+    io.integer_or("count", count, 0, 5);
+    io.numbers_or("weights", weights, Range::non_negative(),
+                  Count::none_or_exactly(static_cast<std::size_t>(count), "count"));
+    io.boolean_or("enabled", enabled);
+    io.choice_or("shade", shade, kShadeTable);
+  }
+};
+
+Gadget gadget_from(const std::string& lines) {
+  const toml::table root = toml::parse("[gadget]\n" + lines);
+  const TableReader table(*root["gadget"].as_table(), "gadget.toml", "gadget");
+  const Gadget gadget = read_fields<Gadget>(table);
+  table.reject_unknown_keys();
+  return gadget;
+}
+}  // namespace
+
+TEST_CASE("string, integer, array and bool fields are read, checked, described and listed from one list",
+          "[parameters]") {
+  const Gadget g =
+      gadget_from("label = \"ab\"\ncount = 3\nweights = [1, 0.5, 2]\nenabled = true\nshade = \"dark\"\n");
+  CHECK(g.label == "ab");
+  CHECK(g.count == 3);
+  CHECK(g.weights == std::vector<double>{1.0, 0.5, 2.0});
+  CHECK(g.enabled);
+  CHECK(g.shade == Shade::Dark);
+  CHECK(described_fields(g) == KeyValues{{"label", "\"ab\""},
+                                         {"count", "3"},
+                                         {"weights", "[1, 0.5, 2]"},
+                                         {"enabled", "true"},
+                                         {"shade", "\"dark\""}});
+  CHECK(field_keys<Gadget>() ==
+        std::vector<std::string_view>{"label", "count", "weights", "enabled", "shade"});
+  // Absent keys keep the struct's initial values; no weights at all is allowed whatever the count.
+  const Gadget defaults = gadget_from("");
+  CHECK(defaults.label == "g");
+  CHECK(defaults.count == 2);
+  CHECK(defaults.weights.empty());
+  CHECK(!defaults.enabled);
+  CHECK_NOTHROW(validated(defaults, "gadget"));
+}
+
+TEST_CASE("bad string, integer, array and bool fields name the file, table, key and what is allowed",
+          "[parameters]") {
+  struct Case {
+    std::string lines, message;
+  };
+  const std::vector<Case> cases = {
+      {"label = \"toolong\"\n",
+       "gadget.toml: [gadget] label = \"toolong\" has 7 characters (allowed: at most 4 characters)"},
+      {"label = 4\n", "gadget.toml: [gadget] label: must be a string"},
+      {"shade = \"grey\"\n",
+       "gadget.toml: [gadget] shade = \"grey\" is not allowed (allowed: \"light\", \"dark\")"},
+      {"count = 3\nweights = [1, 2]\n",
+       "gadget.toml: [gadget] weights: has 2 values (allowed: 0 or 3 values, as count = 3)"},
+      {"weights = [1, -2]\n",
+       "gadget.toml: [gadget] weights: element 2 = -2 is out of range (allowed: 0 <= value)"},
+      {"weights = 1\n", "gadget.toml: [gadget] weights: must be an array of numbers (allowed: 0 <= value)"},
+      {"enabled = 1\n", "gadget.toml: [gadget] enabled: must be true or false"},
+      {"enabled = \"yes\"\n", "gadget.toml: [gadget] enabled: must be true or false"},
+      {"count = 6\n", "gadget.toml: [gadget] count = 6 is out of range (allowed: 0 <= value <= 5)"},
+      {"count = 2.5\n", "gadget.toml: [gadget] count: must be an integer"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.lines);
+    CHECK_THROWS_WITH(gadget_from(c.lines), c.message);
+    CHECK_THROWS_AS(gadget_from(c.lines), ParameterError);
+  }
+  // A struct built in code is checked against the same list.
+  Gadget long_label;
+  long_label.label = "toolong";
+  CHECK_THROWS_WITH(
+      validated(long_label, "gadget"),
+      "gadget parameters: label = \"toolong\" has 7 characters (allowed: at most 4 characters)");
+  Gadget short_weights;
+  short_weights.weights = {1.0};
+  CHECK_THROWS_WITH(validated(short_weights, "gadget"),
+                    "gadget parameters: weights = [1] has 1 values (allowed: 0 or 2 values, as count = 2)");
+  Gadget many;
+  many.count = -1;
+  CHECK_THROWS_WITH(validated(many, "gadget"),
+                    "gadget parameters: count = -1 is out of range (allowed: 0 <= value <= 5)");
+}
+
+TEST_CASE("an unknown key is refused with the nearest known key when one is close", "[parameters]") {
+  const std::vector<std::string_view> known = {"friction_angle", "cohesion", "column_height", "column_width"};
+  CHECK(nearest_key("frictoin_angle", known) == "friction_angle");  // two letters swapped: one edit
+  CHECK(nearest_key("frictionangle", known) == "friction_angle");   // one deleted
+  CHECK(nearest_key("column_heigt", known) == "column_height");
+  CHECK(nearest_key("column_widht", known) == "column_width");
+  CHECK(nearest_key("cohesoin_x", known) == std::nullopt);  // three edits
+  CHECK(nearest_key("xyz", known) == std::nullopt);
+  CHECK(nearest_key("cohesin", known) == "cohesion");  // 7 letters: up to 2 edits
+  CHECK(nearest_key("cohe", known) == std::nullopt);   // 4 letters: 1 edit at most, 4 needed
+  CHECK_THROWS_WITH(gadget_from("lable = \"x\"\n"),
+                    "gadget.toml: [gadget] lable: is not a known key (did you mean \"label\"?)");
+  CHECK_THROWS_WITH(gadget_from("colour = \"x\"\n"), "gadget.toml: [gadget] colour: is not a known key");
+  CHECK_THROWS_WITH(
+      from_text(kDruckerPrager + "frictionangle = 30.0\n"),
+      "case.toml: [material] frictionangle: is not a known key (did you mean \"friction_angle\"?)");
 }

@@ -1,12 +1,14 @@
 // UMAT plug-ins written in this project, loaded through `model = "umat"` and run by the point
 // driver, against soilsph's closed forms; and the adapter's answers to faulty plug-ins.
 #include <unistd.h>
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "constitutive/material.h"
+#include "constitutive/material_description.h"
 #include "constitutive/stress_test.h"
 #include "constitutive/tangent.h"
 #include "tests/common/table1_materials.h"
@@ -172,13 +174,50 @@ TEST_CASE("Bad UMAT tables are refused when read, naming the key", "[umat]") {
   refused(
       "symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1.0e6, 0.3]\nstate_variables = "
       "2\ninitial_state = [1.0]\n",
-      "initial_state: has 1 values, state_variables = 2");
+      "test.toml: [material] initial_state: has 1 values (allowed: 0 or 2 values, as state_variables = 2)");
   refused("symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1.0e6, 0.3]\nstress_unit = \"GPa\"\n",
-          "stress_unit");
+          "test.toml: [material] stress_unit = \"GPa\" is not allowed (allowed: \"Pa\", \"kPa\", \"MPa\")");
+  refused("symbol = \"\"\n",
+          "test.toml: [material] symbol = \"\" has 0 characters (allowed: at least 1 character)");
+  refused("symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1.0e6, 0.3]\nthread_safe = \"yes\"\n",
+          "test.toml: [material] thread_safe: must be true or false");
   refused("symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1.0e6, 0.3]\nstate_variables = 100000\n",
           "state_variables");
   CHECK_THROWS_WITH(umat_material("/nonexistent/libnothing.so", "props = []\n"),
                     Catch::Contains("is not a file"));
+}
+
+TEST_CASE("A UMAT material is described with every key it was given, in its fields() order", "[umat]") {
+  // Every key set off its default; the description is the TOML that reads the material back.
+  const std::string lines =
+      "symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\nprops = [1000000, 0.3]\nstate_variables = 2\n"
+      "initial_state = [0.5, 2]\nstress_unit = \"kPa\"\nthread_safe = true\n";
+  const Material umat = umat_material(kElasticC, lines);
+  CHECK(describe_material(umat) ==
+        "model = \"umat\"; density = 2000; library = \"" + kElasticC +
+            "\"; symbol = \"umat_elastic_c\"; name = \"ELASTIC\"; props = [1000000, 0.3]; "
+            "state_variables = 2; initial_state = [0.5, 2]; stress_unit = \"kPa\"; "
+            "thread_safe = true");
+  // The keys a [material] table may hold are those of the list, whichever model it selects.
+  const std::vector<std::string_view> keys = field_keys<UmatParams>();
+  CHECK(keys == std::vector<std::string_view>{"density", "library", "symbol", "name", "props",
+                                              "state_variables", "initial_state", "stress_unit",
+                                              "thread_safe"});
+  for (const std::string_view key : keys)
+    CHECK(std::find(material_keys().begin(), material_keys().end(), key) != material_keys().end());
+  // Without initial_state (the default, zeros) the description leaves it out.
+  CHECK_THAT(
+      describe_material(umat_material(kElasticC,
+                                      "symbol = \"umat_elastic_c\"\nname = \"ELASTIC\"\n"
+                                      "props = [1000000, 0.3]\n")),
+      !Catch::Contains("initial_state") && Catch::Contains("state_variables = 0; stress_unit = \"Pa\"; "
+                                                           "thread_safe = false"));
+  // The struct built in code is checked by the same list.
+  UmatParams params = std::get<UmatModel>(umat).params();
+  params.name = std::string(81, 'x');
+  CHECK_THROWS_WITH(UmatModel(params),
+                    Catch::Contains("umat parameters: name = \"" + std::string(81, 'x') +
+                                    "\" has 81 characters (allowed: at most 80 characters)"));
 }
 
 TEST_CASE("A relative library path is relative to the TOML file", "[umat]") {
