@@ -43,6 +43,11 @@ std::string particle_count_keys(const Geometry3& g) {
   return "[scene] particle_spacing, floor_margin and the [[regions]]";
 }
 
+/// The soil's height along −g between its lowest and highest particle centres (m): the H of the
+/// free-fall speed √(2 g H).
+double soil_height(const Geometry& g) { return g.soil_extent.height; }
+double soil_height(const Geometry3& g) { return g.column_height; }  // both 3D shorthands: H0
+
 /// The count-independent part of an estimate: the P-wave speed, the step at rest, the steps to the
 /// end time and the run time at kAssumedThroughput for `soil` + `boundary` particles.
 template <int dim>
@@ -139,7 +144,7 @@ void check_feasible(const SceneT& scene, const RunEstimate& e, double memory_ava
   // Each material must carry its weight (|v| << c in every one of them), not only the stiffest,
   // whose c sets the step: a clay of density 2e303 beside a sand was otherwise refused later, by
   // its overflowing geostatic stress, without naming its density.
-  const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity_magnitude() * g.column_height);
+  const double c = e.sound_speed, free_fall = std::sqrt(2.0 * g.gravity_magnitude() * soil_height(g));
   const double p0 = largest_initial_pressure(scene);
   for (std::size_t k = 0; k < scene.materials.size(); ++k) {
     const double ck = p_wave_speed(scene.materials[k], p0);

@@ -25,7 +25,7 @@ GravityLoadingReport relax_under_gravity(const Scene& scene, Particles& particle
   setup.rest.enabled = false;
   setup.checkpoint_interval = 0.0;
 
-  const double g = scene.geometry.gravity_magnitude(), height = scene.geometry.column_height;
+  const double g = scene.geometry.gravity_magnitude(), height = scene.geometry.soil_extent.height;
   double mass = 0.0;
   for (std::size_t i = 0; i < q.soil_count; ++i) mass += q.mass[i];
   double heaviest = 0.0;

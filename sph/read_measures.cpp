@@ -23,7 +23,7 @@ DepositFrame read_deposit(const TableReader& t, const toml::table& table, bool g
     f.defined = false;
     return f;
   }
-  f.origin = vector_or(t, table, "origin", {g.column_width, 0.0}, "m");
+  f.origin = vector_or(t, table, "origin", {g.soil_extent.largest_x, 0.0}, "m");
   // By default across gravity, a quarter turn clockwise from it: −x for gravity along −y.
   const Vec2 down = g.down();
   const Vec2 d = vector_or(t, table, "direction", {down.y, 0.0 - down.x}, "-");
@@ -36,7 +36,7 @@ DepositFrame read_deposit(const TableReader& t, const toml::table& table, bool g
   if (!(std::abs(against) > 1e-6))
     t.fail("direction", "is along gravity; it must cross it (the runout is measured across the pull of gravity)");
   f.up = against > 0.0 ? normal : Vec2{-normal.x, -normal.y};
-  f.toe_thickness = t.number_or("toe_thickness", 0.1 * g.column_height, Range::non_negative(), "m");
+  f.toe_thickness = t.number_or("toe_thickness", 0.1 * g.soil_extent.height, Range::non_negative(), "m");
   t.reject_unknown_keys();
   resolved = t.resolved();
   resolved.insert_or_assign("origin", toml::array{f.origin.x, f.origin.y});

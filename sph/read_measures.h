@@ -16,10 +16,11 @@ namespace soilsph::sph {
 struct Geometry;
 
 /// [deposit] origin, direction, toe_thickness; the defaults are the column's measures: from
-/// (column_width, 0) along −x (in general across gravity, a quarter turn clockwise from it), toe
-/// thickness a tenth of the soil's height. A scene of [[regions]] measures its deposit only if the
-/// table is `given` (an empty one takes the defaults, the soil's largest x as the wall): else the
-/// frame is undefined (DepositFrame::defined). `resolved` gets the table as read, defaults included.
+/// (the soil's largest x, 0), the column's fixed wall, along −x (in general across gravity, a
+/// quarter turn clockwise from it), toe thickness a tenth of the soil's height (both
+/// Geometry::soil_extent). A scene of [[regions]] measures its deposit only if the table is `given`
+/// (an empty one takes the defaults, the soil's largest x as the wall): else the frame is undefined
+/// (DepositFrame::defined). `resolved` gets the table as read, defaults included.
 DepositFrame read_deposit(const TableReader& t, const toml::table& table, bool given, const Geometry& g,
                           toml::table& resolved);
 

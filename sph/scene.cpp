@@ -65,6 +65,7 @@ void read_column(const TableReader& t, const toml::table& table, const toml::tab
                            "");
   const toml::array added = read_boundaries(root, t.source(), g.layout.walls);
   if (!added.empty()) extra.insert("boundaries", added);
+  g.soil_extent = {.largest_x = g.column_width, .height = g.column_height};
   g.surface_level = g.column_height + 0.5 * g.particle_spacing;  // the top of the top row's cells
   g.base_level = 0.0;
 }
@@ -110,8 +111,7 @@ void read_regions(const TableReader& t, const toml::table& table, const toml::ta
   }
   g.surface_level = top;
   g.base_level = bottom + 0.5 * dx;
-  g.column_width = right - 0.5 * dx;
-  g.column_height = std::max(top - 0.5 * dx - g.base_level, dx);
+  g.soil_extent = {.largest_x = right - 0.5 * dx, .height = std::max(top - 0.5 * dx - g.base_level, dx)};
 }
 
 }  // namespace
@@ -161,7 +161,7 @@ Scene read_scene(const toml::table& root, const std::string& source) {
   const std::vector<std::size_t> used = materials_in_use(geometry, tables.materials, region_material);
   const SoilColumn soil{
       .gravity = geometry.gravity_magnitude(),
-      .height = geometry.column_height,
+      .height = geometry.soil_extent.height,
       .spacing = geometry.particle_spacing,
       .end_time = geometry.end_time,
       .smallest_lateral_stress_ratio = [&](const Material& m) { return smallest_admissible_lateral_stress_ratio(m, geometry); }};

@@ -19,14 +19,25 @@ namespace soilsph::sph {
 /// speed (a moving wall: geometry/column.h).
 enum class WallWithdrawal { Instant, None, Lift };
 
+/// The soil's size, taken from the layout's regions: the column's W and H, and for [[regions]] the
+/// same measures of whatever soil they hold.
+struct SoilExtent {
+  /// The soil's largest x (m): its outline's right edge less Δp/2, where a box's particle centres
+  /// end (the column: W, its fixed wall). The deposit frame's default origin (read_measures.h).
+  double largest_x;
+  /// The height along −g from the lowest to the highest soil particle centre (m), at least Δp: the
+  /// scale of the rest criterion's defaults, the deposit's toe thickness, the free-fall speed the
+  /// soil must stay well below, the domain's headroom and gravity loading's measures.
+  double height;
+};
+
 /// [scene]: geometry and duration. The soil and the walls are the layout (sph/geometry/layout.h,
 /// docs/reference/scenes.md): from [[regions]] and [[boundaries]], or built from the column keys.
 struct Geometry {
   bool column;              ///< the layout is the column shorthand's (column_width, ... given)
-  double column_width;      ///< column: W (m), the soil spans 0 ≤ x ≤ W; regions: the soil's largest x
-                            ///< (the deposit measures' fixed-wall reference, analysis/deposit.h)
-  double column_height;     ///< column: H (m), the soil spans 0 ≤ y ≤ H; regions: the soil's height
-                            ///< along −g between its lowest and highest particles
+  double column_width;      ///< column only (0 for regions): W (m), the soil spans 0 ≤ x ≤ W
+  double column_height;     ///< column only (0 for regions): H (m), the soil spans 0 ≤ y ≤ H
+  SoilExtent soil_extent;   ///< the soil's size in every layout (the column: W and H)
   double particle_spacing;  ///< Δp (m), lattice spacing of soil and boundary particles
   double smoothing_ratio;   ///< h/Δp
   double end_time;          ///< s

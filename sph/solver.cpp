@@ -32,7 +32,7 @@ Domain domain(const Scene& scene) {
     for (const Vec2& v : r.outline) include(v, support);
   // Soil thrown up to twice its height above its base; a scene of regions also that far sideways
   // (the column's soil stays between its fixed wall and the floor's far end).
-  const double up = 2.0 * g.column_height + support;
+  const double up = 2.0 * g.soil_extent.height + support;
   d.y_max = std::max(d.y_max, g.base_level + up);
   if (!g.column)
     for (const Region& r : g.layout.regions)

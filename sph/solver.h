@@ -113,72 +113,109 @@ struct StepSampleOf {
 };
 using StepSample = StepSampleOf<2>;
 
-/// Reusable work space of the loop (no allocation after the first step).
+/// The neighbour pairs, and what loop 1 prepares from the particles for the pair sums of the loops
+/// after it.
 template <int dim>
-struct WorkspaceOf {
+struct PairDataOf {
   PairList<dim> neighbours;
-  std::array<std::vector<double>, dim> v_next;  ///< v^{n+½} while a step computes it
-  std::vector<double> density_next;             ///< ρ^{n+1} while a step computes it
-  /// x^{n+1} while a step computes it, in space only: there a pair takes x_i − x_j from the
-  /// positions (neighbours/neighbour_list.h), which the drift must not change under the loop that
-  /// still reads them; the plane's pairs hold x_i − x_j, so it drifts in place. Ghosts keep theirs.
-  std::array<std::vector<double>, dim == 3 ? 3 : 0> x_next;
   std::vector<double> volume;  ///< m/ρ^n of every particle, for eq 23 (one division per particle, not per pair)
   std::atomic<bool> any_tension{false};  ///< a particle carries artificial stress this step (loop 1 → 2)
+  bool search_next = true;               ///< the next step searches neighbours (Verlet skin exceeded)
+
+  explicit PairDataOf(std::size_t particles) : volume(particles) {}
+};
+
+/// The state at the step's end while the step computes it, kept apart from the state at its start,
+/// which the neighbours still read; the step's close swaps it in.
+template <int dim>
+struct NextStateOf {
+  std::array<std::vector<double>, dim> velocity;  ///< v^{n+½}
+  std::vector<double> density;                    ///< ρ^{n+1}
+  /// x^{n+1}, in space only: there a pair takes x_i − x_j from the positions
+  /// (neighbours/neighbour_list.h), which the drift must not change under the loop that still reads
+  /// them; the plane's pairs hold x_i − x_j, so it drifts in place. Ghosts keep theirs.
+  std::array<std::vector<double>, dim == 3 ? 3 : 0> position;
+
+  explicit NextStateOf(const ParticlesOf<dim>& p) : density(p.density) {
+    const auto v = velocities(p);
+    for (int a = 0; a < dim; ++a) velocity[a].assign(v[a].begin(), v[a].end());
+    if constexpr (dim == 3) position = {p.x, p.y, p.z};
+  }
+  /// v^{n+½} as spans, for the stages that read or write it.
+  std::array<std::span<double>, dim> velocity_spans() {
+    std::array<std::span<double>, dim> v;
+    for (int a = 0; a < dim; ++a) v[a] = velocity[a];
+    return v;
+  }
+  std::array<std::span<const double>, dim> velocity_spans() const {
+    std::array<std::span<const double>, dim> v;
+    for (int a = 0; a < dim; ++a) v[a] = velocity[a];
+    return v;
+  }
+};
+
+/// What can go wrong in a step, found where it happens and turned into an exception by the loop
+/// after the step, and the wall guard's count of corrections.
+struct StepHealth {
+  StepFailure failure;       ///< a failed constitutive update, and the count of fallbacks
+  std::exception_ptr error;  ///< a failed neighbour search or sample
+  double energy_budget = std::numeric_limits<double>::infinity();  ///< J/m the kinetic energy may not exceed
+  std::string blow_up;  ///< what the close of the last step found insane (blow_up.h); empty: nothing
+  std::size_t guard_corrections = 0;  ///< times the wall guard had to act (expected 0)
+
+  bool failed() const { return failure.failed() || error; }
+};
+
+/// The histories' sampling: whom a step that samples calls, and when.
+template <int dim>
+struct SamplingOf {
+  /// Called inside the steps that sample (RunControl::on_sample).
+  std::function<void(const StepSampleOf<dim>&)> sampler;
+  bool due = false;        ///< this step samples; changed only between steps (every thread reads it)
+  double last_time = 0.0;  ///< t^n of the last sample
+};
+
+/// The cuts of the loops over soil rows that differ in cost per particle (range_balancer.h): loop 1,
+/// loop 2 and loop 4 of each material group.
+struct LoopBalancers {
+  RangeBalancer prepare, momentum;
+  std::vector<RangeBalancer> stress;
+
+  /// Sizes them for a parallel region of `threads` over `groups` material groups (serial).
+  void use_threads(int threads, std::size_t groups) {
+    stress.resize(groups);
+    prepare.use_threads(threads);
+    momentum.use_threads(threads);
+    for (RangeBalancer& b : stress) b.use_threads(threads);
+  }
+  void rebalance() {
+    prepare.rebalance();
+    momentum.rebalance();
+    for (RangeBalancer& b : stress) b.rebalance();
+  }
+};
+
+/// Reusable work space of the loop (no allocation after the first step): where the step stands, and
+/// one part for each job of the step.
+template <int dim>
+struct WorkspaceOf {
   double previous_dt = 0.0;  ///< Δt_{n−1}; 0 before the first step, so the first kick is half a step
   double time = 0.0;         ///< t^n (s), for the walls' motion
   double sound_speed = 0.0;  ///< current c (m/s)
   double max_speed = 0.0;    ///< largest soil speed |v^{n+½}| after the last step (m/s)
   std::size_t moving = 0;    ///< soil particles faster than the rest speed after the last step
-  bool search_next = true;   ///< the next step searches neighbours (Verlet skin exceeded)
-  std::size_t guard_corrections = 0;  ///< times the wall guard had to act (expected 0)
-  StepFailure failure;                ///< a failed constitutive update, and the count of fallbacks
-  std::exception_ptr error;           ///< a failed neighbour search
-  double energy_budget = std::numeric_limits<double>::infinity();  ///< J/m the kinetic energy may not exceed
-  std::string blow_up;  ///< what the close of the last step found insane (blow_up.h); empty: nothing
-  std::function<void(const StepSampleOf<dim>&)> sampler;  ///< called inside the steps that sample (RunControl)
-  bool sample_due = false;  ///< this step samples; changed only between steps (every thread reads it)
-  double sample_time = 0.0;  ///< t^n of the last sample
-  /// The cuts of the loops over soil rows that differ in cost per particle (range_balancer.h):
-  /// loop 1, loop 2 and loop 4 of each material group.
-  RangeBalancer prepare_balance, momentum_balance;
-  std::vector<RangeBalancer> stress_balance;
+  PairDataOf<dim> pairs;     ///< searched at a step's start if due; loop 1 fills, loops 2–4 read
+  NextStateOf<dim> next;     ///< loops 2 and 4 write it, loop 3 and the close read it
+  StepHealth health;         ///< loop 4, the search, the sample and the close report to it
+  SamplingOf<dim> sampling;  ///< between loops 2 and 3 of a step that samples
+  LoopBalancers balance;     ///< cut loops 1, 2 and 4 between the threads
 
   WorkspaceOf(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& p)
-      : density_next(p.density), volume(p.size()), sound_speed(setup.sound_speed) {
-    const auto v = velocities(p);
-    for (int a = 0; a < dim; ++a) v_next[a].assign(v[a].begin(), v[a].end());
-    if constexpr (dim == 3) {
-      x_next = {p.x, p.y, p.z};
-      // Cells on a grid fixed for the run (neighbours/cell_list.h), so a row depends on positions
-      // alone, as a domain decomposition needs; the plane keeps the bounding box's grid, which its
-      // shipped results were made with.
-      neighbours.anchor_cells_at({setup.domain.lo.x, setup.domain.lo.y, setup.domain.lo.z});
-    }
-  }
-  /// v^{n+½} as spans, for the stages that read or write it.
-  std::array<std::span<double>, dim> v_next_spans() {
-    std::array<std::span<double>, dim> v;
-    for (int a = 0; a < dim; ++a) v[a] = v_next[a];
-    return v;
-  }
-  std::array<std::span<const double>, dim> v_next_spans() const {
-    std::array<std::span<const double>, dim> v;
-    for (int a = 0; a < dim; ++a) v[a] = v_next[a];
-    return v;
-  }
-  bool failed() const { return failure.failed() || error; }
-  /// Sizes the balancers for a parallel region of `threads` over `groups` material groups (serial).
-  void use_threads(int threads, std::size_t groups) {
-    stress_balance.resize(groups);
-    prepare_balance.use_threads(threads);
-    momentum_balance.use_threads(threads);
-    for (RangeBalancer& b : stress_balance) b.use_threads(threads);
-  }
-  void rebalance() {
-    prepare_balance.rebalance();
-    momentum_balance.rebalance();
-    for (RangeBalancer& b : stress_balance) b.rebalance();
+      : sound_speed(setup.sound_speed), pairs(p.size()), next(p) {
+    // Cells on a grid fixed for the run (neighbours/cell_list.h), so a row depends on positions
+    // alone, as a domain decomposition needs; the plane keeps the bounding box's grid, which its
+    // shipped results were made with.
+    if constexpr (dim == 3) pairs.neighbours.anchor_cells_at({setup.domain.lo.x, setup.domain.lo.y, setup.domain.lo.z});
   }
 };
 using Workspace = WorkspaceOf<2>;
@@ -268,32 +305,36 @@ template <int dim>
 void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p,
                 WorkspaceOf<dim>& work, double dt) {
   const auto velocity = p.velocity_arrays();
-  for (int a = 0; a < dim; ++a) std::swap(*velocity[a], work.v_next[a]);
-  std::swap(p.density, work.density_next);
+  NextStateOf<dim>& next = work.next;
+  for (int a = 0; a < dim; ++a) std::swap(*velocity[a], next.velocity[a]);
+  std::swap(p.density, next.density);
   if constexpr (dim == 3)  // the ghosts' entries of both stay as built: the walls of space do not move
-    std::swap(p.x, work.x_next[0]), std::swap(p.y, work.x_next[1]), std::swap(p.z, work.x_next[2]);
+    std::swap(p.x, next.position[0]), std::swap(p.y, next.position[1]), std::swap(p.z, next.position[2]);
   setup.walls.advance(p, work.time, dt);
   work.time += dt;
   const std::size_t pushed = setup.guard.apply(p, work.time);
-  work.guard_corrections += pushed;
+  work.health.guard_corrections += pushed;
   work.previous_dt = dt;
   const SoilTotals totals = soil_totals(setup, p, work.sound_speed);
   work.max_speed = std::sqrt(totals.v2_max);
   work.moving = totals.moving;
+  StepHealth& health = work.health;
   if (totals.first_insane < p.soil_count) {
-    work.blow_up = particle_blow_up(p, totals.first_insane, work.sound_speed, setup.domain);
-  } else if (!(totals.kinetic <= work.energy_budget)) {
+    health.blow_up = particle_blow_up(p, totals.first_insane, work.sound_speed, setup.domain);
+  } else if (!(totals.kinetic <= health.energy_budget)) {
     const std::string unit = dim == 2 ? " J/m" : " J";
-    work.blow_up = "blow-up: the kinetic energy " + std::to_string(totals.kinetic) + unit +
-                   " exceeds all the energy the soil held at the start, " + std::to_string(work.energy_budget) +
-                   unit + " (potential, elastic, kinetic); " + fastest_particle(p, totals.fastest) + kBlowUpHint;
+    health.blow_up = "blow-up: the kinetic energy " + std::to_string(totals.kinetic) + unit +
+                     " exceeds all the energy the soil held at the start, " +
+                     std::to_string(health.energy_budget) + unit + " (potential, elastic, kinetic); " +
+                     fastest_particle(p, totals.fastest) + kBlowUpHint;
   } else if (pushed > std::max<std::size_t>(10, p.soil_count / 100)) {
-    work.blow_up = "blow-up: the wall guard pushed " + std::to_string(pushed) +
-                   " soil particles back through a wall in one step" + kBlowUpHint;
+    health.blow_up = "blow-up: the wall guard pushed " + std::to_string(pushed) +
+                     " soil particles back through a wall in one step" + kBlowUpHint;
   }
-  if (!work.blow_up.empty()) return;  // a search on such positions would fail or exhaust memory
-  work.search_next = work.neighbours.search_needed(p.coordinates());
-  if (setup.pressure_dependent_stiffness && work.search_next) work.sound_speed = current_sound_speed(groups, setup, p);
+  if (!health.blow_up.empty()) return;  // a search on such positions would fail or exhaust memory
+  work.pairs.search_next = work.pairs.neighbours.search_needed(p.coordinates());
+  if (setup.pressure_dependent_stiffness && work.pairs.search_next)
+    work.sound_speed = current_sound_speed(groups, setup, p);
 }
 }  // namespace detail
 
@@ -303,7 +344,10 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
 template <int dim, class OnClosed>
 void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p,
                     WorkspaceOf<dim>& work, double dt, OnClosed&& on_closed) {
-  PairList<dim>& nl = work.neighbours;
+  PairDataOf<dim>& pairs = work.pairs;
+  PairList<dim>& nl = pairs.neighbours;
+  NextStateOf<dim>& next = work.next;
+  StepHealth& health = work.health;
   const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
   const auto& m = setup.momentum;
   const double kick_dt = kick_interval(work.previous_dt, dt);
@@ -322,15 +366,15 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
     for (std::size_t i = first; i < last; ++i) body(i);
     balance.record(thread, thread_cpu_seconds() - start);
   };
-  if (work.search_next) {
+  if (pairs.search_next) {
     try {
       nl.search(p.coordinates(), setup.kernel, p.soil_count, p.id);  // every thread throws alike, or none
     } catch (...) {
 #pragma omp critical(soilsph_search_failure)
-      if (!work.error) work.error = std::current_exception();
+      if (!health.error) health.error = std::current_exception();
     }
   }
-  if (!work.error) {
+  if (!health.error) {
     // 1. Pairs at x^n; ghosts take σ^n, ρ^n from the soil (their v^{n−½} came with the last step);
     //    the artificial stress from σ^n, then what the pairs of the momentum equation read (σ/ρ², v, ρ,
     //    m packed per particle), soil and ghosts. The soil rows and the ghost rows are shared out
@@ -340,59 +384,60 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
     const auto prepare = [&](std::size_t i) {
       nl.fill_row(i, p.coordinates(), setup.kernel);
       if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i, setup.ghost_body_force);
-      work.volume[i] = particle_volume(p, i);
+      pairs.volume[i] = particle_volume(p, i);
       if (m.artificial_stress.enabled() && set_artificial_stress(p, i, m.artificial_stress.epsilon()))
-        work.any_tension.store(true, std::memory_order_relaxed);
+        pairs.any_tension.store(true, std::memory_order_relaxed);
       set_momentum_source(p, i);
     };
-    balanced(work.prepare_balance, 0, p.soil_count, prepare);
+    balanced(work.balance.prepare, 0, p.soil_count, prepare);
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = soil; s < all; ++s) prepare(static_cast<std::size_t>(s));
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
     //    Each particle's own ρ and σ, whatever its material: no interface model (docs/reference/scenes.md).
-    const bool any_tension = work.any_tension.load(std::memory_order_relaxed);  // after loop 1's barrier
+    const bool any_tension = pairs.any_tension.load(std::memory_order_relaxed);  // after loop 1's barrier
     const auto acceleration = acceleration_arrays(p);
     const auto velocity = p.velocity_arrays();
-    balanced(work.momentum_balance, 0, p.soil_count, [&](std::size_t i) {
+    balanced(work.balance.momentum, 0, p.soil_count, [&](std::size_t i) {
       const AccelerationOf<dim> a = acceleration_of(p, nl, m, i, any_tension);
       for (int k = 0; k < dim; ++k) {
         (*acceleration[k])[i] = a[k];
-        work.v_next[k][i] = (*velocity[k])[i] + kick_dt * a[k];
+        next.velocity[k][i] = (*velocity[k])[i] + kick_dt * a[k];
       }
     });
 #pragma omp barrier
-    if (work.sample_due) {
+    if (work.sampling.due) {
 #pragma omp single
       try {
-        work.sample_time = work.time;
-        work.sampler({work.time, p, nl, m, std::as_const(work).v_next_spans()});
+        work.sampling.last_time = work.time;
+        work.sampling.sampler({work.time, p, nl, m, std::as_const(next).velocity_spans()});
       } catch (...) {
-        work.error = std::current_exception();
+        health.error = std::current_exception();
       }
     }
     // 3. Ghosts take v^{n+½}.
 #pragma omp for schedule(static)
     for (std::ptrdiff_t s = soil; s < all; ++s)
-      mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), work.v_next_spans());
+      mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), next.velocity_spans());
     // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
     //    stage of this loop reads σ of a neighbour, nor x in the plane, whose pairs hold x_i − x_j; in
-    //    space, where they are taken from the positions, x^{n+1} goes to work.x_next). One loop per
+    //    space, where they are taken from the positions, x^{n+1} goes to next.position). One loop per
     //    material, its model chosen once here by every thread alike. The groups are disjoint: one
     //    barrier after the last.
     std::size_t group = 0;
-    detail::for_each_group(groups, [&](const auto& model, const auto& fallback, std::size_t begin, std::size_t end) {
-      balanced(work.stress_balance[group++], begin, end, [&](std::size_t i) {
-        const KinematicRatesOf<dim> rates = kinematic_rates_of(p, nl, i, std::as_const(work).v_next_spans(),
-                                                               work.volume, setup.velocity_gradient_correction);
-        update_particle_stress(model, fallback, p, i, rates.L, dt, work.failure);
-        work.density_next[i] = p.density[i] + dt * rates.density_rate;
+    detail::for_each_group(groups, [&](const auto& model, const auto& fallback, std::size_t begin,
+                                       std::size_t end) {
+      balanced(work.balance.stress[group++], begin, end, [&](std::size_t i) {
+        const KinematicRatesOf<dim> rates = kinematic_rates_of(
+            p, nl, i, std::as_const(next).velocity_spans(), pairs.volume, setup.velocity_gradient_correction);
+        update_particle_stress(model, fallback, p, i, rates.L, dt, health.failure);
+        next.density[i] = p.density[i] + dt * rates.density_rate;
         if constexpr (dim == 2) {
-          p.x[i] += dt * work.v_next[0][i];
-          p.y[i] += dt * work.v_next[1][i];
+          p.x[i] += dt * next.velocity[0][i];
+          p.y[i] += dt * next.velocity[1][i];
         } else {
-          work.x_next[0][i] = p.x[i] + dt * work.v_next[0][i];
-          work.x_next[1][i] = p.y[i] + dt * work.v_next[1][i];
-          work.x_next[2][i] = p.z[i] + dt * work.v_next[2][i];
+          next.position[0][i] = p.x[i] + dt * next.velocity[0][i];
+          next.position[1][i] = p.y[i] + dt * next.velocity[1][i];
+          next.position[2][i] = p.z[i] + dt * next.velocity[2][i];
         }
       });
     });
@@ -400,9 +445,9 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
   }
 #pragma omp single
   {
-    if (!work.failed()) detail::close_step(groups, setup, p, work, dt);
-    work.any_tension.store(false, std::memory_order_relaxed);  // loop 2 has read it
-    work.rebalance();
+    if (!health.failed()) detail::close_step(groups, setup, p, work, dt);
+    pairs.any_tension.store(false, std::memory_order_relaxed);  // loop 2 has read it
+    work.balance.rebalance();
     on_closed();
   }
 }
@@ -420,7 +465,7 @@ template <class Model, int dim>
 void advance(const Model& model, const SolverSetupOf<dim>& setup, ParticlesOf<dim>& p, WorkspaceOf<dim>& work,
              double dt) {
   const MaterialGroups groups = single_material(model, p);
-  work.use_threads(1, groups.size());
+  work.balance.use_threads(1, groups.size());
   advance_groups(groups, setup, p, work, dt, [] {});
 }
 
@@ -559,14 +604,14 @@ class TimeLoop {
       continue_from(*resume_);
     else if (stiffness_from_particles(groups))
       work_.sound_speed = current_sound_speed(groups, setup, p);
-    work_.energy_budget = starting_energy();
+    work_.health.energy_budget = starting_energy();
     wall_before_ = stats_.wall_seconds;
     next_checkpoint_ =
         setup.checkpoint_interval > 0.0
             ? setup.checkpoint_interval * (std::floor(clock_.time() / setup.checkpoint_interval) + 1)
             : std::numeric_limits<double>::infinity();
     next_sample_ = control.first_sample;
-    work_.sampler = control.on_sample;
+    work_.sampling.sampler = control.on_sample;
   }
 
   /// The run: the first frame and step, then chunks of steps until a step decides to stop.
@@ -576,8 +621,8 @@ class TimeLoop {
     if (error_) std::rethrow_exception(error_);
     stats_ = statistics_now();
     stats_.workspace_bytes =
-        work_.neighbours.bytes_per_particle() * p_.size() +
-        (dim + 2 + work_.x_next.size()) * p_.size() * sizeof(double);  // the *_next buffers, volume
+        work_.pairs.neighbours.bytes_per_particle() * p_.size() +
+        (dim + 2 + work_.next.position.size()) * p_.size() * sizeof(double);  // the next state, volume
     return stats_;
   }
 
@@ -591,12 +636,12 @@ class TimeLoop {
     work_.sound_speed = state.sound_speed;
     work_.max_speed = state.max_speed;
     work_.moving = state.moving;
-    work_.guard_corrections = stats_.guard_corrections;
+    work_.health.guard_corrections = stats_.guard_corrections;
     work_.time = state.stats.end_time;
     setup_.walls.set_velocities(p_, work_.time);
-    work_.failure.restore_fallback_updates(stats_.fallback_stress_updates);
-    work_.neighbours.search(searched_positions<dim>(state), setup_.kernel, p_.soil_count, p_.id);
-    work_.search_next = work_.neighbours.search_needed(p_.coordinates());
+    work_.health.failure.restore_fallback_updates(stats_.fallback_stress_updates);
+    work_.pairs.neighbours.search(searched_positions<dim>(state), setup_.kernel, p_.soil_count, p_.id);
+    work_.pairs.search_next = work_.pairs.neighbours.search_needed(p_.coordinates());
   }
 
   /// All the energy the soil holds now (blow_up.h): the kinetic energy may never exceed it.
@@ -623,7 +668,7 @@ class TimeLoop {
     const auto chunk_start = Clock::now();
     const std::size_t first = stats_.steps,
                       steps_now = tuner.trying() ? std::max<std::size_t>(chunk_ / 4, 4) : chunk_;
-    work_.use_threads(tuner.threads(), groups_.size());
+    work_.balance.use_threads(tuner.threads(), groups_.size());
     const auto after_step = [this] { close(); };
 #pragma omp parallel num_threads(tuner.threads())
     for (std::size_t k = 0; k < steps_now && !stop_; ++k)  // `stop_` is read after the closing barrier
@@ -660,13 +705,14 @@ class TimeLoop {
 
   /// The step's failure, blow-up or failed search as an exception naming the step and its time.
   void throw_if_failed() const {
-    if (!work_.failed() && work_.blow_up.empty()) return;
+    const StepHealth& health = work_.health;
+    if (!health.failed() && health.blow_up.empty()) return;
     const std::string when =
         " (step " + std::to_string(stats_.steps + 1) + ", t = " + std::to_string(clock_.time()) + " s)";
-    if (!work_.blow_up.empty()) throw BlowUp(work_.blow_up + when);
-    if (work_.failure.failed()) throw IntegrationError(work_.failure.message() + when);
+    if (!health.blow_up.empty()) throw BlowUp(health.blow_up + when);
+    if (health.failure.failed()) throw IntegrationError(health.failure.message() + when);
     try {
-      std::rethrow_exception(work_.error);
+      std::rethrow_exception(health.error);
     } catch (const std::exception& e) {
       throw std::runtime_error(e.what() + when);
     }
@@ -706,11 +752,12 @@ class TimeLoop {
   }
 
   void schedule_sample() {
-    if (!work_.sampler) return;
-    if (work_.sample_due)
+    SamplingOf<dim>& sampling = work_.sampling;
+    if (!sampling.sampler) return;
+    if (sampling.due)
       next_sample_ =
-          control_.sample_interval * (std::floor(work_.sample_time / control_.sample_interval) + 1.0);
-    work_.sample_due = clock_.time() >= next_sample_;
+          control_.sample_interval * (std::floor(sampling.last_time / control_.sample_interval) + 1.0);
+    sampling.due = clock_.time() >= next_sample_;
   }
 
   /// The statistics so far, with the counts the workspace kept during the loop.
@@ -718,8 +765,8 @@ class TimeLoop {
     RunStatistics now = stats_;
     now.end_time = clock_.time();
     now.wall_seconds = wall_before_ + std::chrono::duration<double>(Clock::now() - start_).count();
-    now.guard_corrections = work_.guard_corrections;
-    now.fallback_stress_updates = work_.failure.fallback_updates();
+    now.guard_corrections = work_.health.guard_corrections;
+    now.fallback_stress_updates = work_.health.failure.fallback_updates();
     return now;
   }
 
@@ -733,11 +780,11 @@ class TimeLoop {
         .max_speed = work_.max_speed,
         .moving = work_.moving,
         .rest = rest_.memory(),
-        .search_x = work_.neighbours.search_x(),
-        .search_y = work_.neighbours.search_y(),
+        .search_x = work_.pairs.neighbours.search_x(),
+        .search_y = work_.pairs.neighbours.search_y(),
         .search_z = {},
     };
-    if constexpr (dim == 3) state.search_z = work_.neighbours.search_positions(2);
+    if constexpr (dim == 3) state.search_z = work_.pairs.neighbours.search_positions(2);
     control_.checkpoint(p_, state);
   }
 

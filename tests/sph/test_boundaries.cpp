@@ -52,7 +52,7 @@ Outcome throw_block(bool at_floor, double v0) {
   double v = 0.0;
   for (std::size_t i = 0; i < p.soil_count; ++i) v += at_floor ? -p.vy[i] : p.vx[i];
   o.final_velocity = v / static_cast<double>(p.soil_count);
-  o.guard_corrections = work.guard_corrections;
+  o.guard_corrections = work.health.guard_corrections;
   REQUIRE(all_finite(p));
   return o;
 }

@@ -69,7 +69,9 @@ TEST_CASE("an empty [deposit] measures a scene of regions as a column from its s
   CHECK(scene.deposit.origin.x == Approx(0.04 - 0.002).margin(1e-15));
   CHECK(scene.deposit.origin.y == 0.0);
   CHECK(scene.deposit.direction == Vec2{-1.0, 0.0});
-  CHECK(scene.deposit.toe_thickness == Approx(0.1 * scene.geometry.column_height));
+  // A tenth of the soil's height between its lowest and highest particle centres: 0.06 − 0.004.
+  CHECK(scene.geometry.soil_extent.height == Approx(0.056).margin(1e-15));
+  CHECK(scene.deposit.toe_thickness == Approx(0.1 * 0.056));
   Collapse collapse(scene);
   // At rest before the first step: the runout is the soil's width between particle centres.
   CHECK(collapse.deposit().runout_m == Approx(0.036).margin(1e-12));

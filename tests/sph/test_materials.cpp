@@ -191,7 +191,7 @@ namespace {
 template <class Model>
 std::optional<Mat3> stress_by(const Model& model, const State& before, const Particles& p, const Workspace& work,
                               const SolverSetup& setup, std::size_t i, double dt) {
-  const VelocityGradient L = kinematic_rates_of(p, work.neighbours, i, {p.vx, p.vy}, work.volume,
+  const VelocityGradient L = kinematic_rates_of(p, work.pairs.neighbours, i, {p.vx, p.vy}, work.pairs.volume,
                                                 setup.velocity_gradient_correction)
                                  .L;
   StepFailure ignored;
@@ -217,12 +217,12 @@ TEST_CASE("each group's particles are updated by their own material's model, not
   const SolverSetup setup = make_solver_setup(scene);
   const MaterialGroups groups = material_groups(scene.materials, p);
   Workspace work(setup, p);
-  work.use_threads(1, groups.size());
+  work.balance.use_threads(1, groups.size());
   const double dt = setup.initial_time_step();
   for (double t = 0.0; t < 0.02; t += dt) advance_groups(groups, setup, p, work, dt, [] {});
   const std::vector<State> before(p.state.begin(), p.state.end());
   advance_groups(groups, setup, p, work, dt, [] {});
-  REQUIRE_FALSE(work.failed());
+  REQUIRE_FALSE(work.health.failed());
   const auto& clay = std::get<ModifiedCamClay>(scene.materials[0]);
   const auto& sand = std::get<DruckerPrager>(scene.materials[1]);
   std::size_t told_apart[2] = {0, 0};

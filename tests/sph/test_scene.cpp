@@ -16,6 +16,8 @@ TEST_CASE("the shipped scenes hold the paper's column: 41 x 61 = 2501 particles 
     CHECK(p.soil_count == 2501);
     CHECK(scene.geometry.column_width == 0.04);
     CHECK(scene.geometry.column_height == 0.06);
+    CHECK(scene.geometry.soil_extent.largest_x == 0.04);  // the column's particle centres reach W and H
+    CHECK(scene.geometry.soil_extent.height == 0.06);
     CHECK(scene.geometry.wall_withdrawal == WallWithdrawal::Instant);
     CHECK(density(scene.material) == 2000.0);
   }

@@ -34,7 +34,7 @@ Ran run_for(const Scene& scene) {
   const int steps = static_cast<int>(std::ceil(setup.end_time / dt));
   for (int k = 0; k < steps; ++k) advance(model, setup, p, work, dt);
   REQUIRE(all_finite(p));
-  return {std::move(p), work.guard_corrections};
+  return {std::move(p), work.health.guard_corrections};
 }
 
 /// The soil particle nearest to (x, y).
