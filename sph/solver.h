@@ -621,7 +621,7 @@ class TimeLoop {
     if (error_) std::rethrow_exception(error_);
     stats_ = statistics_now();
     stats_.workspace_bytes =
-        work_.pairs.neighbours.bytes_per_particle() * p_.size() +
+        work_.pairs.neighbours.bytes() +
         (dim + 2 + work_.next.position.size()) * p_.size() * sizeof(double);  // the next state, volume
     return stats_;
   }
