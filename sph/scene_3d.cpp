@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sph/initial_state_3d.h"
+#include "sph/read_boundaries_3d.h"
 #include "sph/read_measures.h"
 #include "sph/scene_sections.h"
 
@@ -82,7 +83,8 @@ Wall3 wall(Vec3 corner, Vec3 a, Vec3 b, WallKind kind, const std::string& label,
   return {.plane = rectangle_wall(corner, a, b, source + ": the " + label),
           .kind = kind,
           .friction_angle = 0.0,
-          .label = label};
+          .label = label,
+          .motion = {}};
 }
 
 /// The box of the floor's extent [x_lo, x_hi] × [z_lo, z_hi] grown by the ghost layers and the
@@ -162,9 +164,14 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
   const double dx = g.particle_spacing;
   check_spacing_divides_column(t, g.column_width, g.column_height, dx);
   require_whole_spacings(t, "slab_thickness", g.slab_thickness, dx);
-  // A 3D wall does not move yet: the gate ("lift") is a 2D scene's.
-  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none"});
-  g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant : WallWithdrawal::None;
+  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none", "lift"});
+  g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant
+                      : withdrawal == "none"  ? WallWithdrawal::None
+                                              : WallWithdrawal::Lift;
+  if (g.wall_withdrawal == WallWithdrawal::Lift)
+    g.lift_speed = t.number("lift_speed", Range::open(0.0, 1e3), "m/s");
+  else if (t.has("lift_speed"))
+    t.fail("lift_speed", "needs wall_withdrawal = \"lift\" (the gate's speed)");
   g.floor_length = t.number_or("floor_length", 6.0 * g.column_width, Range::open(g.column_width, 1e3), "m");
   g.column_radius = 0.0, g.floor_radius = 0.0;
   g.symmetry = ColumnSymmetry::None;
@@ -186,9 +193,16 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
       wall({x_lo, y, 0.0}, {0.0, 0.0, T}, {along, 0.0, 0.0}, WallKind::NoSlip, "floor", source));
   g.walls.push_back(
       wall({x_wall, y, 0.0}, {0.0, 0.0, T}, {0.0, up, 0.0}, WallKind::FreeSlip, "fixed_wall", source));
-  if (g.wall_withdrawal == WallWithdrawal::None)
+  if (g.wall_withdrawal != WallWithdrawal::Instant)
     g.walls.push_back(wall({-0.5 * dx, y, 0.0}, {0.0, up, 0.0}, {0.0, 0.0, T}, WallKind::FreeSlip,
                            "removable_wall", source));
+  if (g.wall_withdrawal == WallWithdrawal::Lift) {
+    // The 2D column's gate (geometry/column.cpp): up at lift_speed until its lower end, from −Δp/2,
+    // has passed H + 2h + Δp, then removed.
+    const double clear = (H + 2.0 * g.smoothing_length() + dx + 0.5 * dx) / g.lift_speed;
+    g.walls.back().motion = {
+        .removed_at = clear, .velocity = {0.0, g.lift_speed, 0.0}, .start = 0.0, .end = clear};
+  }
   g.walls.push_back(
       wall({x_lo, y, 0.0}, {along, 0.0, 0.0}, {0.0, up, 0.0}, WallKind::FreeSlip, "symmetry_z", source));
   g.walls.push_back(
@@ -220,7 +234,7 @@ Geometry3 read_geometry(const TableReader& t, const std::string& source, Vec3 gr
 }  // namespace
 
 Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
-  for (const char* table : {"regions", "boundaries"})
+  for (const char* table : {"regions"})
     if (root.get(table))
       throw ParameterError(
           source + ": [[" + table +
@@ -231,7 +245,7 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
                          ": [deposit] is not read in a 3D scene (the axisymmetric column measures its deposit "
                          "from its axis, the slab from its fixed wall)");
   static constexpr std::string_view kTables[] = {"scene",    "initial", "material", "materials",
-                                                 "numerics", "output",  "gauges"};
+                                                 "numerics", "output",  "gauges",   "boundaries"};
   check_tables(root, source, kTables);
   if (scene_dimension(root, source) != 3)
     throw ParameterError(source +
@@ -246,7 +260,12 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
   (void)t.integer_or("dimension", 3, 3, 3);
   toml::table extra;
   const Vec3 gravity = read_gravity(t, tables.scene_table, extra);
-  const Geometry3 geometry = read_geometry(t, source, gravity);
+  Geometry3 geometry = read_geometry(t, source, gravity);
+  const toml::array boundaries = read_boundaries_3d(root, source, geometry.walls);
+  if (!boundaries.empty())
+    geometry.domain = domain_around_walls(
+        geometry.domain, geometry.walls,
+        geometry.boundary_layers * geometry.particle_spacing + 2.0 * geometry.smoothing_length());
   const std::vector<std::size_t> used{0};
   const SoilColumn soil{.gravity = geometry.gravity_magnitude(),
                         .height = geometry.column_height,
@@ -267,6 +286,7 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
   check_unused_materials(tables, used);
   record_settings(tables, extra, scene.resolved);
   if (!gauges_resolved.empty()) scene.resolved.insert("gauges", std::move(gauges_resolved));
+  if (!boundaries.empty()) scene.resolved.insert("boundaries", boundaries);
   return scene;
 }
 

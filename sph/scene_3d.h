@@ -6,7 +6,8 @@
 /// - the axisymmetric column, column_radius and column_height: a cylinder of soil standing free on
 ///   a no-slip floor, axis along y through x = z = 0, run as a quarter (default), a half or whole;
 /// - the slab, column_width, column_height and slab_thickness: the 2D column extruded along z
-///   between two free-slip planes, with the 2D column's fixed wall, floor and withdrawal.
+///   between two free-slip planes, with the 2D column's fixed wall, floor and withdrawal;
+/// and the planar walls of its [[boundaries]] (sph/read_boundaries_3d.h).
 /// y is up, as in 2D: gravity defaults to (0, −9.81, 0).
 #include <span>
 #include <string>
@@ -17,6 +18,7 @@
 #include "sph/geometry/extrusion.h"
 #include "sph/geometry/planar_wall.h"
 #include "sph/geometry/solid.h"
+#include "sph/geometry/wall_motion.h"
 #include "sph/geometry/vec3.h"
 #include "sph/scene.h"
 #include "sph/scene_settings.h"
@@ -46,13 +48,15 @@ struct ColumnCylinder {
 /// The soil of a 3D scene: the cylinder or the extruded column.
 using SoilShape3 = std::variant<ColumnCylinder, Extrusion>;
 
-/// A wall of space: its plane polygon, how it acts on the soil (as the 2D Wall) and its name in the
-/// run's histories.
+/// A wall of space: its plane polygon, how it acts on the soil and moves (as the 2D Wall) and its
+/// name in the run's histories.
 struct Wall3 {
   PlanarWall plane;
   WallKind kind = WallKind::FreeSlip;
   double friction_angle = 0.0;  ///< degrees, Frictional only
-  std::string label;  ///< "floor", "symmetry_x", "symmetry_z", "symmetry_far", "fixed_wall", "removable_wall"
+  std::string label;  ///< "floor", "symmetry_x", "symmetry_z", "symmetry_far", "fixed_wall", "removable_wall";
+                      ///< a [[boundaries]] name ("boundary_K" by default)
+  WallMotionOf<3> motion;  ///< still unless it moves or is removed (the slab's gate, [[boundaries]])
 };
 
 /// [scene] of a 3D scene: the shorthand's keys and what they build.
@@ -68,7 +72,8 @@ struct Geometry3 {
   ColumnSymmetry symmetry;         ///< axisymmetric; the slab: None
   double floor_radius;             ///< axisymmetric: half-width of the square floor (m)
   double floor_length;             ///< slab: the floor from the fixed wall towards −x (m)
-  WallWithdrawal wall_withdrawal;  ///< slab: "instant" or "none"; axisymmetric: None (no wall)
+  WallWithdrawal wall_withdrawal;  ///< slab: "instant", "none" or "lift"; axisymmetric: None (no wall)
+  double lift_speed;               ///< slab, "lift": the gate's upward speed (m/s); otherwise 0
   double particle_spacing;         ///< Δp (m)
   double smoothing_ratio;          ///< h/Δp
   double end_time;                 ///< s
@@ -78,7 +83,8 @@ struct Geometry3 {
   // What they build.
   SoilShape3 soil;   ///< the soil's solid
   Lattice3 lattice;  ///< soil and ghost nodes (axisymmetric: origin (Δp/2, 0, Δp/2); slab: (0, 0, Δp/2))
-  std::vector<Wall3> walls;  ///< every wall present at t = 0 (a withdrawn wall is never built)
+  std::vector<Wall3> walls;  ///< every wall present at t = 0, the shorthand's then the [[boundaries]] (a wall
+                             ///< withdrawn at t = 0 is never built)
   Box3 domain;               ///< no soil particle may leave it: the floor's extent, ghosts and kernel support
                              ///< around it, up to twice the soil's height above the floor
   double floor_level;        ///< the floor surface's height y (m), −Δp/2: the potential-energy datum

@@ -79,7 +79,7 @@ struct SolverSetupOf {
   double frame_interval;
   MomentumParamsOf<dim> momentum;
   WallGuardOf<dim> guard;
-  WallMotions walls;            ///< moving and removed walls (stages/boundaries.h)
+  WallMotionsOf<dim> walls;     ///< moving and removed walls (stages/wall_motions.h)
   double potential_datum = 0.0; ///< height of the lowest wall along −g (m), for the energy budget
   bool velocity_gradient_correction = false;  ///< stages/velocity_gradient.h
   bool pressure_dependent_stiffness = false;  ///< recompute c from the pressures at each search
@@ -121,7 +121,8 @@ struct WorkspaceOf {
   std::vector<double> density_next;             ///< ρ^{n+1} while a step computes it
   /// x^{n+1} while a step computes it, in space only: there a pair takes x_i − x_j from the
   /// positions (neighbours/neighbour_list.h), which the drift must not change under the loop that
-  /// still reads them; the plane's pairs hold x_i − x_j, so it drifts in place. Ghosts keep theirs.
+  /// still reads them; the plane's pairs hold x_i − x_j, so it drifts in place. The ghosts' entries
+  /// are brought up to date only where walls move (close_step).
   std::array<std::vector<double>, dim == 3 ? 3 : 0> x_next;
   std::vector<double> volume;  ///< m/ρ^n of every particle, for eq 23 (one division per particle, not per pair)
   std::atomic<bool> any_tension{false};  ///< a particle carries artificial stress this step (loop 1 → 2)
@@ -264,8 +265,17 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
   const auto velocity = p.velocity_arrays();
   for (int a = 0; a < dim; ++a) std::swap(*velocity[a], work.v_next[a]);
   std::swap(p.density, work.density_next);
-  if constexpr (dim == 3)  // the ghosts' entries of both stay as built: the walls of space do not move
+  if constexpr (dim == 3) {
+    // The ghosts' entries of x_next are those the last swap left there: where walls move, bring them
+    // up to date first, so that the walls' motion below moves each ghost on from where it is.
+    if (setup.walls.any) {
+      const auto ghosts = static_cast<std::ptrdiff_t>(p.soil_count);
+      for (const auto& [now, next] : {std::pair{&p.x, &work.x_next[0]}, std::pair{&p.y, &work.x_next[1]},
+                                      std::pair{&p.z, &work.x_next[2]}})
+        std::copy(now->begin() + ghosts, now->end(), next->begin() + ghosts);
+    }
     std::swap(p.x, work.x_next[0]), std::swap(p.y, work.x_next[1]), std::swap(p.z, work.x_next[2]);
+  }
   setup.walls.advance(p, work.time, dt);
   work.time += dt;
   const std::size_t pushed = setup.guard.apply(p, work.time);
