@@ -18,8 +18,8 @@
 #include "sph/geometry/extrusion.h"
 #include "sph/geometry/planar_wall.h"
 #include "sph/geometry/solid.h"
-#include "sph/geometry/wall_motion.h"
 #include "sph/geometry/vec3.h"
+#include "sph/geometry/wall_motion.h"
 #include "sph/scene.h"
 #include "sph/scene_settings.h"
 
@@ -54,8 +54,9 @@ struct Wall3 {
   PlanarWall plane;
   WallKind kind = WallKind::FreeSlip;
   double friction_angle = 0.0;  ///< degrees, Frictional only
-  std::string label;  ///< "floor", "symmetry_x", "symmetry_z", "symmetry_far", "fixed_wall", "removable_wall";
-                      ///< a [[boundaries]] name ("boundary_K" by default)
+  /// "floor", "symmetry_x", "symmetry_z", "symmetry_far", "fixed_wall", "removable_wall"; a
+  /// [[boundaries]] name ("boundary_K" by default)
+  std::string label;
   WallMotionOf<3> motion;  ///< still unless it moves or is removed (the slab's gate, [[boundaries]])
 };
 
