@@ -211,11 +211,7 @@ WallGuard wall_guard(const Scene& scene) {
 
 WallMotions wall_motions(const Scene& scene) {
   WallMotions m;
-  for (const Wall& w : scene.geometry.layout.walls) {
-    m.motions.push_back(w.motion);
-    m.any = m.any || w.motion.moves() ||
-            (w.motion.removed_at > 0.0 && w.motion.removed_at < std::numeric_limits<double>::infinity());
-  }
+  for (const Wall& w : scene.geometry.layout.walls) m.add(w.motion);
   return m;
 }
 

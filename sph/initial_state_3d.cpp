@@ -25,13 +25,18 @@ double friction_coefficient(const Wall3& wall) {
 /// across every free-slip wall other than its own that it also lies behind, within the ghost layers
 /// (a corner of two symmetry planes, the floor's edge below one, the floor's corner below both).
 /// Such a plane must be normal to an axis, so that the reflections commute and their product is a
-/// sign per axis; the shorthands' symmetry planes are. Throws ParameterError for another.
+/// sign per axis; the shorthands' symmetry planes are. Throws ParameterError for another. A wall
+/// that moves or goes images no ghost: its plane leaves the ghosts behind it. A moving wall's ghost
+/// keeps its images only while it moves parallel to the planes that image it: another motion is an
+/// error.
 Vec3 image_signs(const Geometry3& g, const GhostPoint3& b, const std::string& source) {
   const double depth = (g.boundary_layers + 1e-9) * g.particle_spacing;
+  const Wall3& own = g.walls[static_cast<std::size_t>(b.wall)];
+  const double own_velocity[3] = {own.motion.velocity.x, own.motion.velocity.y, own.motion.velocity.z};
   double sign[3] = {1.0, 1.0, 1.0};
   for (std::size_t w = 0; w < g.walls.size(); ++w) {
     const Wall3& wall = g.walls[w];
-    if (static_cast<int>(w) == b.wall || wall.kind != WallKind::FreeSlip) continue;
+    if (static_cast<int>(w) == b.wall || wall.kind != WallKind::FreeSlip || wall.motion.changes()) continue;
     const double height = wall.plane.height_above(b.position);
     if (!(height < -1e-9 * g.particle_spacing && height > -depth)) continue;
     const Vec3 n = wall.plane.inward;
@@ -41,6 +46,11 @@ Vec3 image_signs(const Geometry3& g, const GhostPoint3& b, const std::string& so
       throw ParameterError(source + ": the free-slip wall \"" + wall.label +
                            "\" meets another wall's ghosts but is not normal to an axis (a corner of two such "
                            "planes is mirrored only where each is normal to x, y or z)");
+    if (own.motion.moves() && own_velocity[axis] != 0.0)
+      throw ParameterError(
+          source + ": the wall \"" + own.label + "\" moves across the free-slip wall \"" + wall.label +
+          "\", behind which some of its ghosts lie: they would leave it (a moving wall's ghosts "
+          "may move only parallel to the free-slip walls they lie behind)");
     sign[axis] = -sign[axis];
   }
   return {sign[0], sign[1], sign[2]};
@@ -118,9 +128,17 @@ ParticlesOf<3> build_particles_3d(const Scene3& scene) {
   // stable sort keeps the lattice order within a material, and the whole order with one material.
   std::stable_sort(soil.begin(), soil.end(),
                    [&](const SoilNode3& a, const SoilNode3& b) { return material_of(a) < material_of(b); });
+  // A node behind two walls is claimed by the first wall listed (planar_ghosts.h): the walls that
+  // stay are listed before those that move or go, which would otherwise carry a wall's edge and
+  // corner ghosts away (the slab's symmetry planes beside its lifted gate).
+  std::vector<std::size_t> claiming;
+  for (const bool changes : {false, true})
+    for (std::size_t w = 0; w < g.walls.size(); ++w)
+      if (g.walls[w].motion.changes() == changes) claiming.push_back(w);
   std::vector<PlanarWall> planes;
-  for (const Wall3& w : g.walls) planes.push_back(w.plane);
-  const std::vector<GhostPoint3> ghosts = planar_ghost_points(planes, g.lattice, g.boundary_layers);
+  for (const std::size_t w : claiming) planes.push_back(g.walls[w].plane);
+  std::vector<GhostPoint3> ghosts = planar_ghost_points(planes, g.lattice, g.boundary_layers);
+  for (GhostPoint3& b : ghosts) b.wall = static_cast<int>(claiming[static_cast<std::size_t>(b.wall)]);
 
   double lowest = std::numeric_limits<double>::infinity();  // the bottom of the lowest particle's cell
   for (const SoilNode3& n : soil) lowest = std::min(lowest, g.height(n.position) - 0.5 * dx);
@@ -150,7 +168,14 @@ ParticlesOf<3> build_particles_3d(const Scene3& scene) {
   std::fill(p.density.begin(), p.density.end(), rho);
   std::fill(p.mass.begin(), p.mass.end(), mass);
   if (scene.materials.size() > 1) set_material_densities(p, scene);
+  wall_motions(scene).set_velocities(p, 0.0);
   return p;
+}
+
+WallMotionsOf<3> wall_motions(const Scene3& scene) {
+  WallMotionsOf<3> motions;
+  for (const Wall3& w : scene.geometry.walls) motions.add(w.motion);
+  return motions;
 }
 
 Mat3 geostatic_stress_3d(const Geometry3& g, double density, double k0, double surface, double height) {

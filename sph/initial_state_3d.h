@@ -6,6 +6,7 @@
 #include "constitutive/material.h"
 #include "sph/particles.h"
 #include "sph/scene_3d.h"
+#include "sph/stages/wall_motions.h"
 
 namespace soilsph::sph {
 
@@ -13,9 +14,12 @@ namespace soilsph::sph {
 /// i), mass ρ Δp³, at rest, material 0, layer ids along −g from the bottom of the lowest particle's
 /// cell by [output] layer_thickness; then the ghosts of every wall, boundary_layers deep
 /// (geometry/planar_ghosts.h), each with its wall's inward normal, friction μ (0 free slip, +∞ no
-/// slip, tan δ), id and kind, at rest, with the soil's density and mass. The stress is zero: see
-/// set_geostatic_state_3d.
+/// slip, tan δ), id and kind, with the soil's density and mass, and the velocity of its wall at
+/// t = 0. The stress is zero: see set_geostatic_state_3d.
 ParticlesOf<3> build_particles_3d(const Scene3& scene);
+
+/// The motions of the scene's walls, by wall index (stages/wall_motions.h).
+WallMotionsOf<3> wall_motions(const Scene3& scene);
 
 /// The geostatic stress of space, tension-positive: σ = σ_v (K0 (I − ĝĝ) + ĝĝ) with
 /// σ_v = −ρ |g| (surface − height), the weight of the soil above along −g and K0 σ_v on every

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sph/initial_state_3d.h"
+#include "sph/read_boundaries_3d.h"
 #include "sph/read_measures.h"
 #include "sph/read_regions_3d.h"
 #include "sph/scene_sections.h"
@@ -69,7 +70,8 @@ Wall3 wall(Vec3 corner, Vec3 a, Vec3 b, WallKind kind, const std::string& label,
   return {.plane = rectangle_wall(corner, a, b, source + ": the " + label),
           .kind = kind,
           .friction_angle = 0.0,
-          .label = label};
+          .label = label,
+          .motion = {}};
 }
 
 }  // namespace
@@ -153,9 +155,14 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
   const double dx = g.particle_spacing;
   check_spacing_divides_column(t, g.column_width, g.column_height, dx);
   require_whole_spacings(t, "slab_thickness", g.slab_thickness, dx);
-  // A 3D wall does not move yet: the gate ("lift") is a 2D scene's.
-  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none"});
-  g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant : WallWithdrawal::None;
+  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none", "lift"});
+  g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant
+                      : withdrawal == "none"  ? WallWithdrawal::None
+                                              : WallWithdrawal::Lift;
+  if (g.wall_withdrawal == WallWithdrawal::Lift)
+    g.lift_speed = t.number("lift_speed", Range::open(0.0, 1e3), "m/s");
+  else if (t.has("lift_speed"))
+    t.fail("lift_speed", "needs wall_withdrawal = \"lift\" (the gate's speed)");
   g.floor_length = t.number_or("floor_length", 6.0 * g.column_width, Range::open(g.column_width, 1e3), "m");
   g.column_radius = 0.0, g.floor_radius = 0.0;
   g.symmetry = ColumnSymmetry::None;
@@ -179,9 +186,16 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
       wall({x_lo, y, 0.0}, {0.0, 0.0, T}, {along, 0.0, 0.0}, WallKind::NoSlip, "floor", source));
   g.walls.push_back(
       wall({x_wall, y, 0.0}, {0.0, 0.0, T}, {0.0, up, 0.0}, WallKind::FreeSlip, "fixed_wall", source));
-  if (g.wall_withdrawal == WallWithdrawal::None)
+  if (g.wall_withdrawal != WallWithdrawal::Instant)
     g.walls.push_back(wall({-0.5 * dx, y, 0.0}, {0.0, up, 0.0}, {0.0, 0.0, T}, WallKind::FreeSlip,
                            "removable_wall", source));
+  if (g.wall_withdrawal == WallWithdrawal::Lift) {
+    // The 2D column's gate (geometry/column.cpp): up at lift_speed until its lower end, from −Δp/2,
+    // has passed H + 2h + Δp, then removed.
+    const double clear = (H + 2.0 * g.smoothing_length() + dx + 0.5 * dx) / g.lift_speed;
+    g.walls.back().motion = {
+        .removed_at = clear, .velocity = {0.0, g.lift_speed, 0.0}, .start = 0.0, .end = clear};
+  }
   g.walls.push_back(
       wall({x_lo, y, 0.0}, {along, 0.0, 0.0}, {0.0, up, 0.0}, WallKind::FreeSlip, "symmetry_z", source));
   g.walls.push_back(
@@ -213,18 +227,13 @@ Geometry3 read_geometry(const TableReader& t, const std::string& source, Vec3 gr
 }  // namespace
 
 Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
-  if (root.get("boundaries"))
-    throw ParameterError(source +
-                         ": [[boundaries]] describe 2D scenes; a 3D scene's walls are its shorthand's (column_radius: "
-                         "an axisymmetric column, column_width and slab_thickness: a slab), or the floor under its "
-                         "[[regions]] ([scene] floor_level, floor_margin)");
   const bool regions = root.get("regions") != nullptr;
   if (root.get("deposit") && !regions)
     throw ParameterError(source +
                          ": [deposit] is not read in a 3D shorthand scene (the axisymmetric column measures its deposit "
                          "from its axis, the slab from its fixed wall); a scene of [[regions]] takes [deposit] axis");
-  static constexpr std::string_view kTables[] = {"scene",    "initial", "material", "materials", "regions",
-                                                 "numerics", "output",  "deposit",  "gauges"};
+  static constexpr std::string_view kTables[] = {"scene",   "initial", "material", "materials", "regions",   "numerics",
+                                                 "output",  "deposit", "gauges",   "boundaries"};
   check_tables(root, source, kTables);
   if (scene_dimension(root, source) != 3)
     throw ParameterError(source +
@@ -251,6 +260,11 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
   } else {
     geometry = read_geometry(t, source, gravity);
   }
+  const toml::array boundaries = read_boundaries_3d(root, source, geometry.walls);
+  if (!boundaries.empty())
+    geometry.domain = domain_around_walls(
+        geometry.domain, geometry.walls,
+        geometry.boundary_layers * geometry.particle_spacing + 2.0 * geometry.smoothing_length());
   const SoilColumn soil{.gravity = geometry.gravity_magnitude(),
                         .height = geometry.column_height,
                         .spacing = geometry.particle_spacing,
@@ -274,6 +288,7 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
   if (regions) scene.resolved.insert("regions", std::move(regions_resolved));
   if (regions && scene.geometry.deposit_measured) scene.resolved.insert("deposit", std::move(deposit_resolved));
   if (!gauges_resolved.empty()) scene.resolved.insert("gauges", std::move(gauges_resolved));
+  if (!boundaries.empty()) scene.resolved.insert("boundaries", boundaries);
   return scene;
 }
 

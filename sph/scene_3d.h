@@ -9,6 +9,7 @@
 ///   between two free-slip planes, with the 2D column's fixed wall, floor and withdrawal;
 /// - [[regions]] (sph/read_regions_3d.h): boxes, cylinders, extrusions, STL solids and imported
 ///   particles, each of its [materials.NAME], standing on a no-slip floor.
+/// Any scene may add the planar walls of its [[boundaries]] (sph/read_boundaries_3d.h).
 /// y is up, as in 2D: gravity defaults to (0, −9.81, 0).
 #include <span>
 #include <string>
@@ -22,18 +23,22 @@
 #include "sph/geometry/regions_3d.h"
 #include "sph/geometry/solid.h"
 #include "sph/geometry/vec3.h"
+#include "sph/geometry/wall_motion.h"
 #include "sph/scene.h"
 #include "sph/scene_settings.h"
 
 namespace soilsph::sph {
 
-/// A wall of space: its plane polygon, how it acts on the soil (as the 2D Wall) and its name in the
-/// run's histories.
+/// A wall of space: its plane polygon, how it acts on the soil and moves (as the 2D Wall) and its
+/// name in the run's histories.
 struct Wall3 {
   PlanarWall plane;
   WallKind kind = WallKind::FreeSlip;
   double friction_angle = 0.0;  ///< degrees, Frictional only
-  std::string label;  ///< "floor", "symmetry_x", "symmetry_z", "symmetry_far", "fixed_wall", "removable_wall"
+  /// "floor", "symmetry_x", "symmetry_z", "symmetry_far", "fixed_wall", "removable_wall"; a
+  /// [[boundaries]] name ("boundary_K" by default)
+  std::string label;
+  WallMotionOf<3> motion;  ///< still unless it moves or is removed (the slab's gate, [[boundaries]])
 };
 
 /// [scene] of a 3D scene: the shorthand's keys and what they build.
@@ -49,7 +54,8 @@ struct Geometry3 {
   ColumnSymmetry symmetry;         ///< axisymmetric; the slab: None
   double floor_radius;             ///< axisymmetric: half-width of the square floor (m)
   double floor_length;             ///< slab: the floor from the fixed wall towards −x (m)
-  WallWithdrawal wall_withdrawal;  ///< slab: "instant" or "none"; axisymmetric: None (no wall)
+  WallWithdrawal wall_withdrawal;  ///< slab: "instant", "none" or "lift"; axisymmetric: None (no wall)
+  double lift_speed;               ///< slab, "lift": the gate's upward speed (m/s); otherwise 0
   double particle_spacing;         ///< Δp (m)
   double smoothing_ratio;          ///< h/Δp
   double end_time;                 ///< s
@@ -61,7 +67,8 @@ struct Geometry3 {
   std::vector<SoilRegion3> regions;
   Lattice3 lattice;  ///< soil and ghost nodes (axisymmetric: origin (Δp/2, 0, Δp/2); slab: (0, 0, Δp/2);
                      ///< regions: [scene] lattice_origin, default (Δp/2, Δp/2, Δp/2))
-  std::vector<Wall3> walls;  ///< every wall present at t = 0 (a withdrawn wall is never built)
+  std::vector<Wall3> walls;  ///< every wall present at t = 0, the shape's then the [[boundaries]] (a wall
+                             ///< withdrawn at t = 0 is never built)
   Box3 domain;               ///< no soil particle may leave it: the floor's extent, ghosts and kernel support
                              ///< around it, up to twice the soil's height above the floor
   double floor_level;        ///< the floor surface's height y (m), −Δp/2: the potential-energy datum

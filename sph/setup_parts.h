@@ -56,7 +56,7 @@ MomentumParamsOf<dim> momentum_params(const Numerics& numerics, const CubicSplin
 template <int dim>
 struct GeometryParts {
   WallGuardOf<dim> guard;
-  WallMotions walls;
+  WallMotionsOf<dim> walls;
   double potential_datum;  ///< height of the lowest wall along −g (m)
   DomainOf<dim> domain;
 };

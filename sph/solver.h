@@ -79,7 +79,7 @@ struct SolverSetupOf {
   double frame_interval;
   MomentumParamsOf<dim> momentum;
   WallGuardOf<dim> guard;
-  WallMotions walls;            ///< moving and removed walls (stages/boundaries.h)
+  WallMotionsOf<dim> walls;     ///< moving and removed walls (stages/wall_motions.h)
   double potential_datum = 0.0; ///< height of the lowest wall along −g (m), for the energy budget
   bool velocity_gradient_correction = false;  ///< stages/velocity_gradient.h
   bool pressure_dependent_stiffness = false;  ///< recompute c from the pressures at each search
@@ -133,7 +133,8 @@ struct NextStateOf {
   std::vector<double> density;                    ///< ρ^{n+1}
   /// x^{n+1}, in space only: there a pair takes x_i − x_j from the positions
   /// (neighbours/neighbour_list.h), which the drift must not change under the loop that still reads
-  /// them; the plane's pairs hold x_i − x_j, so it drifts in place. Ghosts keep theirs.
+  /// them; the plane's pairs hold x_i − x_j, so it drifts in place. The ghosts' entries are brought
+  /// up to date only where walls move (close_step).
   std::array<std::vector<double>, dim == 3 ? 3 : 0> position;
 
   explicit NextStateOf(const ParticlesOf<dim>& p) : density(p.density) {
@@ -308,8 +309,18 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
   NextStateOf<dim>& next = work.next;
   for (int a = 0; a < dim; ++a) std::swap(*velocity[a], next.velocity[a]);
   std::swap(p.density, next.density);
-  if constexpr (dim == 3)  // the ghosts' entries of both stay as built: the walls of space do not move
+  if constexpr (dim == 3) {
+    // The ghosts' entries of next.position are those the last swap left there: where walls move,
+    // bring them up to date first, so that the walls' motion below moves each ghost on from where
+    // it is.
+    if (setup.walls.any) {
+      const auto ghosts = static_cast<std::ptrdiff_t>(p.soil_count);
+      for (const auto& [now, later] : {std::pair{&p.x, &next.position[0]}, std::pair{&p.y, &next.position[1]},
+                                       std::pair{&p.z, &next.position[2]}})
+        std::copy(now->begin() + ghosts, now->end(), later->begin() + ghosts);
+    }
     std::swap(p.x, next.position[0]), std::swap(p.y, next.position[1]), std::swap(p.z, next.position[2]);
+  }
   setup.walls.advance(p, work.time, dt);
   work.time += dt;
   const std::size_t pushed = setup.guard.apply(p, work.time);

@@ -9,11 +9,11 @@ namespace soilsph::sph {
 SolverSetupOf<3> make_solver_setup(const Scene3& scene) {
   const Geometry3& g = scene.geometry;
   PlaneGuard guard;
-  for (const Wall3& wall : g.walls) guard.add(wall.plane, g.boundary_layers * g.particle_spacing);
-  return solver_setup<3>(scene, {.guard = guard,
-                                 .walls = {},  // the walls of space stay where they are built
-                                 .potential_datum = g.floor_level,
-                                 .domain = g.domain});
+  for (const Wall3& wall : g.walls)
+    guard.add(wall.plane, g.boundary_layers * g.particle_spacing, wall.motion);
+  return solver_setup<3>(
+      scene,
+      {.guard = guard, .walls = wall_motions(scene), .potential_datum = g.floor_level, .domain = g.domain});
 }
 
 }  // namespace soilsph::sph

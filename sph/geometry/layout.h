@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sph/geometry/vec2.h"
+#include "sph/geometry/wall_motion.h"
 
 namespace soilsph::sph {
 
@@ -27,22 +28,6 @@ struct Region {
 
 /// How a wall acts on the soil (stages/boundaries.h has the mirroring of each).
 enum class WallKind : unsigned char { FreeSlip = 0, NoSlip = 1, Frictional = 2 };
-
-/// A wall's motion: still, removed at a time, and/or moving at a constant velocity from `start` to
-/// `end` (before and after it stands still).
-struct WallMotion {
-  double removed_at = std::numeric_limits<double>::infinity();  ///< s; 0: never there (withdrawn at t = 0)
-  Vec2 velocity;                                                ///< m/s while it moves
-  double start = 0.0, end = 0.0;                                ///< s, the moving interval
-
-  bool moves() const { return end > start && (velocity.x != 0.0 || velocity.y != 0.0); }
-  /// Displacement from its initial position at time t.
-  Vec2 displacement(double t) const;
-  /// Displacement during [t, t + dt].
-  Vec2 displacement(double t, double dt) const;
-  /// Velocity during the step [t, t + dt] (the mean over it: its displacement over dt).
-  Vec2 velocity_during(double t, double dt) const;
-};
 
 /// Where one straight wall's ghost particles sit: rows parallel to the wall, `layers` deep behind
 /// it, `count` along it: anchor + (c Δp) tangent + (k Δp) outward for c = 0 … count − 1,

@@ -67,6 +67,7 @@
 #include "sph/particles.h"
 #include "sph/stages/pair_vectors.h"
 #include "sph/stages/velocity_gradient.h"
+#include "sph/stages/wall_motions.h"
 
 namespace soilsph::sph {
 
@@ -201,40 +202,6 @@ inline double wall_friction_coefficient(const Wall& wall) {
   }
   return std::tan(wall.friction_angle * std::numbers::pi / 180.0);
 }
-
-/// The walls that move or go during a run: their ghosts move with them (the same displacement as
-/// the wall over each step, so the ghosts sweep through the soil rather than jump) and carry their
-/// velocity; a removed wall's ghosts lose their mass, so no pair feels them any more.
-struct WallMotions {
-  std::vector<WallMotion> motions;  ///< by wall index
-  bool any = false;                 ///< some wall moves or is removed after t = 0
-
-  /// Moves the ghosts over [t, t + dt] and sets their wall velocity and mass for time t + dt (serial).
-  /// A motion is in the plane of x and y (in space, the walls of an extruded scene slide in it).
-  template <int dim>
-  void advance(ParticlesOf<dim>& p, double t, double dt) const {
-    if (!any) return;
-    for (std::size_t g = 0; g < p.boundary_count(); ++g) {
-      const WallMotion& m = motions[static_cast<std::size_t>(p.wall_id[g])];
-      const std::size_t b = p.soil_count + g;
-      const Vec2 d = m.displacement(t, dt);
-      p.x[b] += d.x, p.y[b] += d.y;
-      if (t + dt >= m.removed_at) p.mass[b] = 0.0;
-    }
-    set_velocities(p, t + dt);
-  }
-  /// The wall velocity of every ghost at time t (the velocity of the motion it is in, if any).
-  template <int dim>
-  void set_velocities(ParticlesOf<dim>& p, double t) const {
-    if (!any) return;
-    for (std::size_t g = 0; g < p.boundary_count(); ++g) {
-      const WallMotion& m = motions[static_cast<std::size_t>(p.wall_id[g])];
-      const bool moving = m.moves() && t >= m.start && t < m.end;
-      p.wall_vx[g] = moving ? m.velocity.x : 0.0;
-      p.wall_vy[g] = moving ? m.velocity.y : 0.0;
-    }
-  }
-};
 
 /// The last line of defence: a soil particle found behind a wall surface (within the wall's ghost
 /// layers, along its length) is put back on it and its velocity into the wall, relative to the wall,
