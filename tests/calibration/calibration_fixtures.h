@@ -1,8 +1,6 @@
 #pragma once
 // Synthetic laboratory data for the calibration tests: the point driver runs programmes with known
 // ("true") parameters, and the readings it writes are what a calibration must give back.
-#include <unistd.h>
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -10,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/common/temp_dir.h"
 #include "verification/calibration/point_columns.h"
 #include "verification/programme/programme_file.h"
 
@@ -17,19 +16,12 @@ namespace soilsph::calibration::testing {
 
 namespace fs = std::filesystem;
 
-/// A folder of its own under the system's temporary directory, removed at the end.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static std::atomic<int> count = 0;
-    path = fs::temp_directory_path() /
-           ("soilsph_calibration_" + std::to_string(::getpid()) + "_" + std::to_string(count++));
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
+/// A folder of its own under the system's temporary directory (mkdtemp), removed at the end.
+struct TempDir : soilsph::testing::TempDir {
+  TempDir() : soilsph::testing::TempDir("soilsph-calibration") {}
   std::string file(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return (path / name).string();
+    std::ofstream(*this / name) << text;
+    return (*this / name).string();
   }
 };
 

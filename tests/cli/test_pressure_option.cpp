@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "../common/temp_dir.h"
 #include "apps/soilsph/pressure_option.h"
 
 namespace {
@@ -30,11 +31,7 @@ std::string without_command_line(const std::string& text) {
   return kept;
 }
 
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("soilsph_pressure_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
+using soilsph::testing::TempDir;
 
 /// Runs `soilsph point` on the shipped MCC material with `p_initial`; returns the exit status.
 int point_with(const std::string& p_initial, const fs::path& out, const fs::path& log) {
@@ -68,21 +65,21 @@ TEST_CASE("a pressure with an unknown unit or no number is refused", "[cli][pres
 }
 
 TEST_CASE("soilsph point --p-initial takes a unit; the CSV stays in Pa", "[cli][pressure]") {
-  TempDir dir;
-  REQUIRE(point_with("100000", dir.path / "pa.csv", dir.path / "log") == 0);
-  const std::string in_pa = without_command_line(read(dir.path / "pa.csv"));
+  TempDir dir("soilsph-pressure");
+  REQUIRE(point_with("100000", dir.path() / "pa.csv", dir.path() / "log") == 0);
+  const std::string in_pa = without_command_line(read(dir.path() / "pa.csv"));
   for (const char* same : {"100kPa", "0.1MPa", "100000Pa"}) {
-    REQUIRE(point_with(same, dir.path / "unit.csv", dir.path / "log") == 0);
-    CHECK(without_command_line(read(dir.path / "unit.csv")) == in_pa);
+    REQUIRE(point_with(same, dir.path() / "unit.csv", dir.path() / "log") == 0);
+    CHECK(without_command_line(read(dir.path() / "unit.csv")) == in_pa);
   }
   // A bad unit: exit 2, the option named, the units listed; nothing written.
-  REQUIRE(point_with("100kpa", dir.path / "bad.csv", dir.path / "log") == 2);
-  const std::string message = read(dir.path / "log");
+  REQUIRE(point_with("100kpa", dir.path() / "bad.csv", dir.path() / "log") == 2);
+  const std::string message = read(dir.path() / "log");
   CHECK(message.find("--p-initial") != std::string::npos);
   CHECK(message.find("100kpa is not a pressure") != std::string::npos);
   CHECK(message.find("Pa, kPa, MPa, GPa") != std::string::npos);
-  CHECK_FALSE(fs::exists(dir.path / "bad.csv"));
+  CHECK_FALSE(fs::exists(dir.path() / "bad.csv"));
   // Out of range in any unit names the range in Pa.
-  REQUIRE(point_with("0.5Pa", dir.path / "low.csv", dir.path / "log") == 2);
-  CHECK(read(dir.path / "log").find("0.5Pa is out of range") != std::string::npos);
+  REQUIRE(point_with("0.5Pa", dir.path() / "low.csv", dir.path() / "log") == 2);
+  CHECK(read(dir.path() / "log").find("0.5Pa is out of range") != std::string::npos);
 }

@@ -83,7 +83,7 @@ TEST_CASE("Mohr-Coulomb: the return lands on the plane, the edges, the apex or t
   const MohrCoulomb mc(params());
   const Moduli D = mc.elasticity().at(0.0);
   const double s = sind(kPhi), t = sind(kPsi);
-  SECTION("main plane: Δγ = f_tr / (4G(1 + sinφ sinψ/3) + 4K sinφ sinψ) (de Souza Neto Box 8.5)") {
+  SECTION("main plane: dgamma = f_tr / (4G(1 + sin phi sin psi/3) + 4K sin phi sin psi) (de Souza Neto Box 8.5)") {
     const Vec3 trial(-40e3, -90e3, -300e3);
     const double f_trial = (trial(0) - trial(2)) + (trial(0) + trial(2)) * s - mc.cohesion_term();
     REQUIRE(f_trial > 0.0);

@@ -48,7 +48,7 @@ TEST_CASE(
 }
 
 TEST_CASE("MCC implicit with implicit_tolerance = 1e-3, drained triaxial: constant E within 1e-3 of CVODE in 20 "
-          "increments; K ∝ p at the driver's limit",
+          "increments; K proportional to p at the driver's limit",
           "[integrators][cvode]") {
   for (double ocr : {1.0, 1.5}) {
     INFO("OCR " << ocr);

@@ -27,7 +27,7 @@ Material clay(Elasticity::Kind kind, Integrator integrator, double implicit_tole
 
 }  // namespace
 
-TEST_CASE("MCC drained, K ∝ p, 20 increments: the driver's path error exceeds 1e-3 without sub-steps",
+TEST_CASE("MCC drained, K proportional to p, 20 increments: the driver's path error exceeds 1e-3 without sub-steps",
           "[integrators][cvode][path-substeps]") {
   // Why the sub-steps exist: `substep` at 1e-8 integrates the driver's straight strain path within
   // each increment almost exactly, so its error is the path's (σ_r held only at the increment ends).

@@ -89,7 +89,7 @@ TEST_CASE("ghost mirror, free slip at a moving oblique wall: mirrored relative t
   check_velocity(w.mirrored_velocity(), -0.004, -0.172);
 }
 
-TEST_CASE("ghost mirror, no slip at an oblique wall: the stress copied, the velocity 2 v_w − v̄",
+TEST_CASE("ghost mirror, no slip at an oblique wall: the stress copied, the velocity 2 v_w - v_mean",
           "[boundaries][mirror]") {
   SECTION("a wall at rest") {
     ObliqueWall w(kInfinity);
@@ -109,7 +109,7 @@ TEST_CASE("ghost mirror, no slip at an oblique wall: the stress copied, the velo
 TEST_CASE("ghost mirror, frictional oblique wall: Coulomb's limit mu sigma'_n, against the slip or the demand",
           "[boundaries][mirror]") {
   // σ'_n = −σ̄_nn = 2032 Pa.
-  SECTION("sliding (v̄·t = −0.1 m/s), mu = 0.25: tau = −508 Pa against the slip, velocity as free slip") {
+  SECTION("sliding (v_mean.t = -0.1 m/s), mu = 0.25: tau = -508 Pa against the slip, velocity as free slip") {
     ObliqueWall w(0.25);
     w.mirror_stress();
     // σ_b,nt = 2(−508) + 824 = −192: xx = −731.52 − 1259.52 + 184.32, yy = −1300.48 − 708.48 − 184.32,
@@ -118,7 +118,7 @@ TEST_CASE("ghost mirror, frictional oblique wall: Coulomb's limit mu sigma'_n, a
     CHECK(w.p.wall_stick[0] == 0.0);
     check_velocity(w.mirrored_velocity(), -0.04, -0.22);
   }
-  SECTION("sliding the other way (the wall at −0.2 t m/s, slip Δv·t = −0.1 + 0.2): tau = +508 Pa") {
+  SECTION("sliding the other way (the wall at -0.2 t m/s, slip dv.t = -0.1 + 0.2): tau = +508 Pa") {
     ObliqueWall w(0.25, -0.2 * kTx, -0.2 * kTy);
     // σ_b,nt = 2(508) + 824 = 1840.
     w.mirror_stress();
@@ -134,7 +134,7 @@ TEST_CASE("ghost mirror, frictional oblique wall: Coulomb's limit mu sigma'_n, a
     // v_b = 2 v_w − v̄ = (0.16, −0.12) − (0.2, 0.1).
     check_velocity(w.mirrored_velocity(), -0.04, -0.22);
   }
-  SECTION("not slipping but demanding more than the limit, mu = 0.25: tau = −508 Pa with the sign of sigma_nt") {
+  SECTION("not slipping but demanding more than the limit, mu = 0.25: tau = -508 Pa with the sign of sigma_nt") {
     ObliqueWall w(0.25, -0.1 * kTx, -0.1 * kTy);
     w.mirror_stress();
     w.check_stress(-1806.72, -2193.28, 23.04);

@@ -121,7 +121,7 @@ TEST_CASE("eq 12 in space: a uniform stress exerts no force inside, a linear one
   CHECK(p.az[c] == Approx(0.0).margin(1e-6));
 }
 
-TEST_CASE("the artificial stress in space: R = −ε σ₁/ρ² n⊗n for one tensile principal stress along n",
+TEST_CASE("the artificial stress in space: R = -eps sigma_1/rho^2 n(x)n for one tensile principal stress along n",
           "[stages-3d]") {
   ParticlesOf<3> p;
   p.resize(1, 0);
@@ -145,7 +145,7 @@ TEST_CASE("the artificial stress in space: R = −ε σ₁/ρ² n⊗n for one te
   CHECK(p.rxx[0] == 0.0);
 }
 
-TEST_CASE("a ghost behind an oblique plane mirrors the soil: free slip reflects σ and v, no slip keeps σ and reverses v",
+TEST_CASE("a ghost behind an oblique plane mirrors the soil: free slip reflects sigma and v, no slip keeps sigma and reverses v",
           "[stages-3d]") {
   const double dx = 1e-3;
   const int n = 7;

@@ -1,12 +1,12 @@
 // UMAT plug-ins written in this project, loaded through `model = "umat"` and run by the point
 // driver, against soilsph's closed forms; and the adapter's answers to faulty plug-ins.
-#include <unistd.h>
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "../common/temp_dir.h"
 #include "constitutive/material.h"
 #include "constitutive/material_description.h"
 #include "constitutive/stress_test.h"
@@ -40,13 +40,7 @@ CurveErrors against_closed_form(const Material& umat, const Material& builtin, c
 
 const std::string kElasticC = std::string(SOILSPH_UMAT_MISBEHAVING_C);
 
-/// A directory of this test process's own, removed at the end.
-struct TempDir {
-  std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("soilsph_umat_" + std::to_string(::getpid()));
-  TempDir() { std::filesystem::create_directories(path); }
-  ~TempDir() { std::filesystem::remove_all(path); }
-};
+using soilsph::testing::TempDir;
 
 }  // namespace
 
@@ -221,8 +215,8 @@ TEST_CASE("A UMAT material is described with every key it was given, in its fiel
 }
 
 TEST_CASE("A relative library path is relative to the TOML file", "[umat]") {
-  const TempDir temp;
-  const auto& dir = temp.path;
+  const TempDir temp("soilsph-umat");
+  const auto& dir = temp.path();
   std::filesystem::create_directories(dir / "lib");
   std::filesystem::copy_file(kElasticC, dir / "lib" / "elastic.so",
                              std::filesystem::copy_options::overwrite_existing);
@@ -259,12 +253,12 @@ TEST_CASE("A UMAT that crashes or aborts inside a call gets an error naming the 
 
 #ifdef SOILSPH_UMAT_DRUCKER_PRAGER_F
 TEST_CASE("verify runs a case of a UMAT against the closed form of the model it claims to be", "[umat]") {
-  const TempDir temp;
-  std::ofstream(temp.path / "dp-umat.toml")
+  const TempDir temp("soilsph-umat");
+  std::ofstream(temp.path() / "dp-umat.toml")
       << "[material]\nmodel = \"umat\"\ndensity = 2000.0\nlibrary = \"" << SOILSPH_UMAT_DRUCKER_PRAGER_F
       << "\"\nprops = [1.0e6, 0.3, 35.0, 0.0, 0.0]\nstate_variables = 1\n";
   // Table 1's D-P (φ = 35°), and the same soil with φ = 30°: a closed form the UMAT does not follow.
-  std::ofstream(temp.path / "dp-30.toml")
+  std::ofstream(temp.path() / "dp-30.toml")
       << "[material]\nmodel = \"drucker-prager\"\ndensity = 2000.0\n"
          "young_modulus = 1.0e6\npoisson_ratio = 0.3\nfriction_angle = 30.0\n";
   const std::string table1 = std::string(SOILSPH_SOURCE_DIR) + "/data/materials/dp-table1.toml";
@@ -274,11 +268,11 @@ TEST_CASE("verify runs a case of a UMAT against the closed form of the model it 
            "\"\nstrain_targets = [0.3]\nclosed_form = \"" + closed_form + "\"\nclosed_form_material = \"" +
            against + "\"\ntolerance = { umat = 1e-8 }\n";
   };
-  std::ofstream(temp.path / "cases.toml")
+  std::ofstream(temp.path() / "cases.toml")
       << case_text("umat-drained", "triaxial-drained", "dp-triaxial-drained", table1)
       << case_text("umat-undrained", "triaxial-undrained", "dp-triaxial-undrained", table1)
       << case_text("umat-against-phi-30", "triaxial-drained", "dp-triaxial-drained", "dp-30.toml");
-  const auto cases = verification::read_cases(temp.path / "cases.toml");
+  const auto cases = verification::read_cases(temp.path() / "cases.toml");
   REQUIRE(cases.size() == 3);
   for (const auto& c : cases) {
     const verification::CaseResult result = verification::run_case(c);
@@ -288,10 +282,10 @@ TEST_CASE("verify runs a case of a UMAT against the closed form of the model it 
     CHECK(result.runs[0].passed == (c.name != "umat-against-phi-30"));
   }
   // A UMAT case takes no CVODE or integrator tolerance; a built-in case no umat one.
-  std::ofstream(temp.path / "bad.toml")
+  std::ofstream(temp.path() / "bad.toml")
       << "[[case]]\nname = \"bad\"\nmaterial = \"dp-umat.toml\"\npath = "
          "\"triaxial-drained\"\nstrain_targets = [0.3]\ntolerance = { cvode = 1e-5 }\n";
-  CHECK_THROWS_WITH(verification::read_cases(temp.path / "bad.toml"),
+  CHECK_THROWS_WITH(verification::read_cases(temp.path() / "bad.toml"),
                     Catch::Contains("cvode") && Catch::Contains("does not apply to a umat material"));
 }
 

@@ -1,7 +1,6 @@
 // UMAT plug-ins in whole runs of the executable (a child process each): a UMAT that crashes or stops
 // the process is named with its call, and a collapse writes the UMAT's state variables into its frames.
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/temp_dir.h"
 #include "tests/fault/child_process.h"
 
 namespace fs = std::filesystem;
@@ -18,12 +18,7 @@ using soilsph::test::run_child;
 
 namespace {
 
-/// A folder of this test process's own, removed at the end.
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("soilsph_umat_runs_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
+using soilsph::testing::TempDir;
 
 const std::string kMisbehaving = SOILSPH_UMAT_MISBEHAVING_C;
 
@@ -68,12 +63,12 @@ std::vector<double> read_doubles(const fs::path& file, const std::string& name) 
 }  // namespace
 
 TEST_CASE("A UMAT that stops the process (Fortran STOP) in `point` is named with its call", "[umat]") {
-  const TempDir temp;
-  std::ofstream(temp.path / "stop.toml") << misbehaving("STOP");
+  const TempDir temp("soilsph-umat-runs");
+  std::ofstream(temp.path() / "stop.toml") << misbehaving("STOP");
   const auto r =
-      run_child({SOILSPH_EXECUTABLE, "point", (temp.path / "stop.toml").string(), "--test",
-                 "triaxial-drained", "--strain-max", "0.01", "--out", (temp.path / "c.csv").string()},
-                temp.path / "log");
+      run_child({SOILSPH_EXECUTABLE, "point", (temp.path() / "stop.toml").string(), "--test",
+                 "triaxial-drained", "--strain-max", "0.01", "--out", (temp.path() / "c.csv").string()},
+                temp.path() / "log");
   CAPTURE(r.log);
   CHECK(r.exit_status == 1);  // exit(0) inside the call would have passed for success
   CHECK_THAT(r.log, Contains(kMisbehaving) && Contains("umat_elastic_c") && Contains("ended the process") &&
@@ -81,37 +76,37 @@ TEST_CASE("A UMAT that stops the process (Fortran STOP) in `point` is named with
 }
 
 TEST_CASE("A UMAT that crashes in `collapse` stops the run with the particle and the call named", "[umat]") {
-  const TempDir temp;
-  std::ofstream(temp.path / "scene.toml") << column(0.01, misbehaving("SEGFAULT"));
-  const auto r = run_child({SOILSPH_EXECUTABLE, "collapse", (temp.path / "scene.toml").string(), "--threads",
-                            "1", "--out", (temp.path / "run").string()},
-                           temp.path / "log");
+  const TempDir temp("soilsph-umat-runs");
+  std::ofstream(temp.path() / "scene.toml") << column(0.01, misbehaving("SEGFAULT"));
+  const auto r = run_child({SOILSPH_EXECUTABLE, "collapse", (temp.path() / "scene.toml").string(),
+                            "--threads", "1", "--out", (temp.path() / "run").string()},
+                           temp.path() / "log");
   CAPTURE(r.log);
   CHECK(r.signal == 0);
   CHECK(r.exit_status != 0);
   CHECK_THAT(r.log, Contains("soil particle 0") && Contains(kMisbehaving) && Contains("umat_elastic_c") &&
                         Contains("NOEL = 1") && Contains("crashed with SIGSEGV") && Contains("step 1"));
   // The frame of t = 0 stays, and summary.json says why the run stopped.
-  CHECK(fs::exists(temp.path / "run" / "frames" / "frame_000000.h5"));
-  CHECK_THAT(text_of(temp.path / "run" / "summary.json"), Contains("crashed with SIGSEGV"));
+  CHECK(fs::exists(temp.path() / "run" / "frames" / "frame_000000.h5"));
+  CHECK_THAT(text_of(temp.path() / "run" / "summary.json"), Contains("crashed with SIGSEGV"));
 }
 
 TEST_CASE("A collapse writes the UMAT's state variables into its frames when asked", "[umat]") {
-  const TempDir temp;
+  const TempDir temp("soilsph-umat-runs");
   // Table 1's D-P through libsoilsph_umat.so: STATEV(1) p_c (0 for D-P), STATEV(2) the accumulated
   // equivalent plastic strain, which grows where the column yields (docs/reference/umat-library.md).
   const std::string material = "[material]\nmodel = \"umat\"\ndensity = 2000.0\nlibrary = \"" +
                                std::string(SOILSPH_UMAT_LIBRARY) +
                                "\"\nname = \"drucker-prager\"\nprops = [1.0e6, 0.3, 35.0, 0.0, 0.0]\n"
                                "state_variables = 4\nthread_safe = true\n";
-  std::ofstream(temp.path / "scene.toml") << column(0.03, material) << "state_variables = true\n";
-  const auto r = run_child({SOILSPH_EXECUTABLE, "collapse", (temp.path / "scene.toml").string(), "--threads",
-                            "1", "--out", (temp.path / "run").string()},
-                           temp.path / "log");
+  std::ofstream(temp.path() / "scene.toml") << column(0.03, material) << "state_variables = true\n";
+  const auto r = run_child({SOILSPH_EXECUTABLE, "collapse", (temp.path() / "scene.toml").string(),
+                            "--threads", "1", "--out", (temp.path() / "run").string()},
+                           temp.path() / "log");
   CAPTURE(r.log);
   REQUIRE(r.exit_status == 0);
-  const fs::path first = temp.path / "run" / "frames" / "frame_000000.h5",
-                 last = temp.path / "run" / "frames" / "frame_000006.h5";
+  const fs::path first = temp.path() / "run" / "frames" / "frame_000000.h5",
+                 last = temp.path() / "run" / "frames" / "frame_000006.h5";
   REQUIRE(fs::exists(last));
   const std::size_t n = read_doubles(last, "p").size();
   CHECK(n == 176);
@@ -123,13 +118,13 @@ TEST_CASE("A collapse writes the UMAT's state variables into its frames when ask
   CHECK(*std::min_element(plastic_end.begin(), plastic_end.end()) >= 0.0);
   const auto pc = read_doubles(last, "statev_1");
   CHECK(*std::max_element(pc.begin(), pc.end()) == 0.0);
-  CHECK_THAT(text_of(temp.path / "run" / "frames.xdmf"), Contains("frame_000006/statev_4"));
-  CHECK_THAT(text_of(temp.path / "run" / "scene.toml"), Contains("state_variables = true"));
+  CHECK_THAT(text_of(temp.path() / "run" / "frames.xdmf"), Contains("frame_000006/statev_4"));
+  CHECK_THAT(text_of(temp.path() / "run" / "scene.toml"), Contains("state_variables = true"));
   // Without the key, no state variables.
-  std::ofstream(temp.path / "plain.toml") << column(0.005, material);
-  REQUIRE(run_child({SOILSPH_EXECUTABLE, "collapse", (temp.path / "plain.toml").string(), "--threads", "1",
-                     "--out", (temp.path / "plain").string()},
-                    temp.path / "log2")
+  std::ofstream(temp.path() / "plain.toml") << column(0.005, material);
+  REQUIRE(run_child({SOILSPH_EXECUTABLE, "collapse", (temp.path() / "plain.toml").string(), "--threads", "1",
+                     "--out", (temp.path() / "plain").string()},
+                    temp.path() / "log2")
               .exit_status == 0);
-  CHECK(read_doubles(temp.path / "plain" / "frames" / "frame_000001.h5", "statev_1").empty());
+  CHECK(read_doubles(temp.path() / "plain" / "frames" / "frame_000001.h5", "statev_1").empty());
 }
