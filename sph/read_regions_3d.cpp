@@ -228,7 +228,8 @@ void add_regions_floor(Geometry3& g, double margin, const std::string& source) {
                                       source + ": the floor"),
               .kind = WallKind::NoSlip,
               .friction_angle = 0.0,
-              .label = "floor"}};
+              .label = "floor",
+              .motion = {}}};
   g.domain = domain_around(g, x_lo, x_hi, z_lo, z_hi, y);
 }
 

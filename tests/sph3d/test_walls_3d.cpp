@@ -210,12 +210,12 @@ TEST_CASE(
   const SolverSetupOf<3> setup = make_solver_setup(s);
   WorkspaceOf<3> work(setup, p);
   std::vector<double> plate_force_x;  // F_x on the plate at each step (N)
-  work.sampler = [&](const StepSampleOf<3>& sample) {
+  work.sampling.sampler = [&](const StepSampleOf<3>& sample) {
     plate_force_x.push_back(
         boundary_forces(sample.particles, sample.neighbours, sample.momentum, s.geometry.walls.size())[plate]
             .x);
   };
-  work.sample_due = true;
+  work.sampling.due = true;
   const auto& model = std::get<LinearElastic>(s.material);
   const double dt = 1e-4, mass = 2000.0 * 0.004 * 0.004 * 0.004;
   std::size_t plate_ghosts = 0;
