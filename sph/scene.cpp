@@ -49,15 +49,8 @@ void read_column(const TableReader& t, const toml::table& table, const toml::tab
   g.column_height = t.number("column_height", Range::positive(), "m");
   read_space_and_time(t, table, g, extra, Range::open(0.0, std::min(g.column_width, g.column_height) / 4));
   check_spacing_divides_column(t, g.column_width, g.column_height, g.particle_spacing);
-  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none", "lift"});
-  g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant
-                      : withdrawal == "none"  ? WallWithdrawal::None
-                                              : WallWithdrawal::Lift;
-  if (g.wall_withdrawal == WallWithdrawal::Lift)
-    g.lift_speed = t.number("lift_speed", Range::open(0.0, 1e3), "m/s");
-  else if (t.has("lift_speed"))
-    t.fail("lift_speed", "needs wall_withdrawal = \"lift\" (the gate's speed)");
-  g.floor_length = t.number_or("floor_length", 6.0 * g.column_width, Range::open(g.column_width, 1e3), "m");
+  const ColumnRelease release = read_column_release(t, g.column_width);
+  g.wall_withdrawal = release.withdrawal, g.lift_speed = release.lift_speed, g.floor_length = release.floor_length;
   if (t.has("lattice_origin")) t.fail("lattice_origin", "is fixed at [0, 0] by the column keys (column_width, ...)");
   g.layout = column_layout({g.column_width, g.column_height, g.particle_spacing, g.smoothing_length(), g.floor_length,
                             g.boundary_layers, g.wall_withdrawal == WallWithdrawal::Instant,
@@ -115,6 +108,21 @@ void read_regions(const TableReader& t, const toml::table& table, const toml::ta
 }
 
 }  // namespace
+
+ColumnRelease read_column_release(const TableReader& t, double column_width) {
+  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none", "lift"});
+  ColumnRelease r{.withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant
+                                : withdrawal == "none"  ? WallWithdrawal::None
+                                                        : WallWithdrawal::Lift,
+                  .lift_speed = 0.0,
+                  .floor_length = 0.0};
+  if (r.withdrawal == WallWithdrawal::Lift)
+    r.lift_speed = t.number("lift_speed", Range::open(0.0, 1e3), "m/s");
+  else if (t.has("lift_speed"))
+    t.fail("lift_speed", "needs wall_withdrawal = \"lift\" (the gate's speed)");
+  r.floor_length = t.number_or("floor_length", 6.0 * column_width, Range::open(column_width, 1e3), "m");
+  return r;
+}
 
 namespace {
 /// The materials the regions use, as indices into `m`, in the order of their first use; each

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "constitutive/material.h"
+#include "constitutive/parameters.h"
 #include "sph/analysis/deposit.h"
 #include "sph/analysis/gauges.h"
 #include "sph/geometry/layout.h"
@@ -63,6 +64,16 @@ struct Geometry {
     return -(d.x * p.x + d.y * p.y);
   }
 };
+
+/// What releases the column's soil and what it spreads on, [scene] keys shared by the 2D column and
+/// the 3D slab: `wall_withdrawal` ("instant", "none" or "lift"), `lift_speed` (with "lift" only;
+/// otherwise 0) and `floor_length` (default 6 W).
+struct ColumnRelease {
+  WallWithdrawal withdrawal;
+  double lift_speed;    ///< m/s
+  double floor_length;  ///< m
+};
+ColumnRelease read_column_release(const TableReader& t, double column_width);
 
 /// A 2D (plane-strain) scene: what every scene has (SceneSettings) and the plane's geometry, the
 /// materials of its regions, the deposit frame and the gauges.

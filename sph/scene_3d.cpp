@@ -155,15 +155,8 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
   const double dx = g.particle_spacing;
   check_spacing_divides_column(t, g.column_width, g.column_height, dx);
   require_whole_spacings(t, "slab_thickness", g.slab_thickness, dx);
-  const std::string withdrawal = t.choice("wall_withdrawal", {"instant", "none", "lift"});
-  g.wall_withdrawal = withdrawal == "instant" ? WallWithdrawal::Instant
-                      : withdrawal == "none"  ? WallWithdrawal::None
-                                              : WallWithdrawal::Lift;
-  if (g.wall_withdrawal == WallWithdrawal::Lift)
-    g.lift_speed = t.number("lift_speed", Range::open(0.0, 1e3), "m/s");
-  else if (t.has("lift_speed"))
-    t.fail("lift_speed", "needs wall_withdrawal = \"lift\" (the gate's speed)");
-  g.floor_length = t.number_or("floor_length", 6.0 * g.column_width, Range::open(g.column_width, 1e3), "m");
+  const ColumnRelease release = read_column_release(t, g.column_width);
+  g.wall_withdrawal = release.withdrawal, g.lift_speed = release.lift_speed, g.floor_length = release.floor_length;
   g.column_radius = 0.0, g.floor_radius = 0.0;
   g.symmetry = ColumnSymmetry::None;
   g.azimuth_span_deg = 0.0;
