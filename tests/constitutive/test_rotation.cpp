@@ -73,3 +73,20 @@ TEST_CASE("a spin about z alone takes the closed form of the same Cayley rotatio
     CHECK((rotate_about_z(a, c, sn) - Q * a * Q.transpose()).norm() < 1e-14 * a.norm());
   }
 }
+
+TEST_CASE("a spin about any axis turns the state's stress by the paper's terms, with the spin", "[rotation]") {
+  // rotate_state's general path (a spin not about z alone): to first order the stress changes by
+  // σωᵀ + ωσ (eq 21/28), not by its negative (a rotation against the spin).
+  std::mt19937_64 rng(23);
+  State s;
+  s.stress = test::random_symmetric(rng, 1e5);
+  const Mat3 w_unit = test::random_skew(rng, 1.0);
+  REQUIRE(w_unit(0, 2) != 0.0);  // the general path
+  for (double eps : {1e-2, 1e-3}) {
+    const Mat3 w = eps * w_unit;
+    const Mat3 paper = s.stress * w.transpose() + w * s.stress;
+    const double error = (rotate_state(s, w).stress - s.stress - paper).norm();
+    CHECK(error < 2.0 * eps * eps * w_unit.norm() * w_unit.norm() * s.stress.norm());
+    CHECK(error < 0.1 * paper.norm());
+  }
+}
