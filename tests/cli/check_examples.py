@@ -2,8 +2,8 @@
 """`soilsph examples` lists every shipped file, each with its description and a command that runs.
 
 The expected list is the source tree's data/scenes, data/materials, data/programmes (*.toml),
-data/strain-paths (*.csv) and verification/cases (*.toml); each file must begin with a one-line
-description ("# ..."), which the listing must show. Every command printed is run in a temporary
+data/strain-paths (*.csv) and verification/cases (*.toml); each file must begin with a description
+("# ..."), whose first sentence the listing must show. Every command printed is run in a temporary
 folder: each scene through `soilsph check` (the same scene a collapse would start), each point test
 and programme with --out, each verification case file with --no-plots.
 
@@ -47,11 +47,24 @@ with tempfile.TemporaryDirectory() as temp:
         if not first.startswith("# ") or len(first) < 12:
             failures.append(f"{path}: its first line is not a one-line description")
             continue
-        entry = f"  {path.stem}: {first[2:]}"
-        if entry not in lines:
-            failures.append(f"not listed as {entry!r}")
+        # The description is the header's first sentence: the first line, continued over the
+        # header's next lines where the sentence goes on.
+        header = []
+        for line in path.read_text().splitlines():
+            if not line.startswith("# "):
+                break
+            header.append(line[2:].strip())
+        paragraph = " ".join(header)
+        start = f"  {path.stem}: {first[2:]}"
+        listed = [k for k, line in enumerate(lines) if line.startswith(start)]
+        if not listed:
+            failures.append(f"not listed as {start!r}")
             continue
-        command = lines[lines.index(entry) + 1]
+        described = lines[listed[0]][len(f"  {path.stem}: "):]
+        if not (paragraph.startswith(described) and described.endswith(".")):
+            failures.append(f"{path.name}: listed as {described!r}, not the first sentence of {paragraph!r}")
+            continue
+        command = lines[listed[0] + 1]
         words = shlex.split(command)
         if not any(word == str(path) or word.endswith(":" + str(path)) for word in words):
             failures.append(f"{path.name}: the command does not name {path}: {command.strip()}")
