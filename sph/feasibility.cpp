@@ -111,8 +111,10 @@ RunEstimate measure_run(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>&
   RunEstimate e;
   e.soil_particles = p.soil_count;
   e.boundary_particles = p.boundary_count();
-  e.memory_bytes = static_cast<double>(p.bytes()) +
-                   n * static_cast<double>(pairs.bytes_per_particle() + (dim + 2) * sizeof(double));
+  // The step's buffers as the solver holds them (RunStatistics::workspace_bytes): v and ρ at the
+  // step's end and the volume, and in space the positions at its end.
+  const std::size_t buffers = dim + 2 + (dim == 3 ? 3 : 0);
+  e.memory_bytes = static_cast<double>(p.bytes() + pairs.bytes()) + n * static_cast<double>(buffers * sizeof(double));
   e.sound_speed = setup.sound_speed;
   e.time_step = setup.initial_time_step();
   e.steps = setup.end_time / e.time_step;

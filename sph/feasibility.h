@@ -44,7 +44,7 @@ RunEstimate estimate_run(const Scene3& scene);
 
 /// The same measured on a scene's particles as built (a 3D scene's, whose counts depend on how its
 /// shapes fill the lattice): the counts; the memory as the particles' arrays (ParticlesOf::bytes()),
-/// the neighbour list after one search of them (bytes_per_particle()) and the solver's step buffers
+/// the neighbour list after one search of them (PairList::bytes()) and the solver's step buffers
 /// (RunStatistics::workspace_bytes); the step at rest and the steps and run time as estimate_run's.
 template <int dim>
 RunEstimate measure_run(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& particles);
