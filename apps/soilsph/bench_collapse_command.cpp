@@ -19,6 +19,7 @@
 #include <limits>
 #include <span>
 
+#include "apps/soilsph/bench_statistics.h"
 #include "apps/soilsph/commands.h"
 #include "apps/soilsph/data_dir.h"
 #include "sph/bench/bare_pair_loop.h"
@@ -48,12 +49,6 @@ struct Measurement {
   double ratio;  ///< median over the rounds of rate / the bare loop's rate around that round
   double wall_min, wall_max;
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double peak_rss_bytes() {
   rusage usage{};

@@ -19,7 +19,8 @@ Material table1_material(const std::string& dir, const std::string& name) {
 
 void add_bench_command(CLI::App& app) {
   auto* bench = app.add_subcommand(
-      "bench", "Benchmarks: point (the stress integrators' error against cost), collapse (SPH speed)");
+      "bench", "Benchmarks: point (the stress integrators' error against cost), collapse (SPH speed), scaling (SPH "
+      "cost against the particle count)");
   bench->require_subcommand(1);
   auto* point = bench->add_subcommand(
       "point",
@@ -122,6 +123,7 @@ void add_bench_command(CLI::App& app) {
     std::printf("wrote %s/work_precision.csv\n", o->out.c_str());
   });
   add_bench_collapse_command(*bench);
+  add_bench_scaling_command(*bench);
 }
 
 }  // namespace soilsph::cli

@@ -26,6 +26,8 @@ void add_stress_test_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 /// `soilsph bench collapse`, registered by add_bench_command on the `bench` subcommand.
 void add_bench_collapse_command(CLI::App& bench);
+/// `soilsph bench scaling`, registered by add_bench_command on the `bench` subcommand.
+void add_bench_scaling_command(CLI::App& bench);
 
 void add_point_command(CLI::App& app);
 void add_verify_command(CLI::App& app);
