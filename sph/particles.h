@@ -81,11 +81,6 @@ struct ThirdAxisArrays<3> {
   /// its reflection flips that axis's component, so their product is a sign per axis; 1 where there
   /// is none. A vector's component a is multiplied by image_sign[a], a tensor's (a, b) by both.
   std::vector<double> image_sign_x, image_sign_y, image_sign_z;
-  /// Boundary: the ghost's free-slip image minus its velocity (image signs applied): the tangential
-  /// velocity relative to the wall that a sticking wall's image reverses, 2 s Δv_t; 0 on a
-  /// free-slip or sliding wall. Derivatives along the wall read the free-slip image
-  /// (stages/velocity_gradient.h); set with the ghost's velocity (stages/boundaries.h).
-  std::vector<double> wall_slip_x, wall_slip_y, wall_slip_z;
 };
 
 template <int dim>
@@ -240,10 +235,7 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
   template <class Self, class F>
   static void for_each_wall_array_of(Self& p, F& f) {
     f(p.wall_nx), f(p.wall_ny), f(p.wall_vx), f(p.wall_vy), f(p.wall_friction), f(p.wall_stick);
-    if constexpr (dim == 3) {
-      f(p.wall_nz), f(p.wall_vz), f(p.image_sign_x), f(p.image_sign_y), f(p.image_sign_z);
-      f(p.wall_slip_x), f(p.wall_slip_y), f(p.wall_slip_z);
-    }
+    if constexpr (dim == 3) f(p.wall_nz), f(p.wall_vz), f(p.image_sign_x), f(p.image_sign_y), f(p.image_sign_z);
   }
 };
 

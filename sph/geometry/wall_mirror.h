@@ -39,14 +39,6 @@ inline Vec3 ghost_velocity(Vec3 soil, Vec3 wall, Vec3 n, double stick) {
   return soil - (2.0 * dn) * n - (2.0 * stick) * slip;
 }
 
-/// What a sticking wall's image reverses: 2 s Δv_t, the free-slip image v̄ − 2 (Δv·n) n minus the
-/// ghost's velocity (above); derivatives along the wall read the free-slip image
-/// (stages/velocity_gradient.h).
-inline Vec3 reversed_slip(Vec3 soil, Vec3 wall, Vec3 n, double stick) {
-  const Vec3 dv = soil - wall;
-  return (2.0 * stick) * (dv - dot(dv, n) * n);
-}
-
 /// The wall's shear traction τ (in its plane) and the stick flag s.
 struct WallShear {
   Vec3 traction;

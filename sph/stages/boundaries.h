@@ -161,10 +161,9 @@ void mirror_stress_onto_ghost(ParticlesOf<dim>& p, const PairList<dim>& nl, std:
 }
 
 /// Sets ghost b's velocity in v from the soil velocities in the same arrays (for the viscosity, the
-/// velocity gradient and eq 11) and, in space, what its free-slip image adds to it (wall_slip,
-/// for the derivatives along the wall: stages/velocity_gradient.h).
+/// velocity gradient and eq 11).
 template <int dim>
-void mirror_velocity_onto_ghost(ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t b,
+void mirror_velocity_onto_ghost(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t b,
                                 const MutableVelocitySpans<dim>& v) {
   double sum_w = 0.0;
   std::array<double, dim> sum{};
@@ -172,12 +171,11 @@ void mirror_velocity_onto_ghost(ParticlesOf<dim>& p, const PairList<dim>& nl, st
     sum_w += q.w;
     for (int a = 0; a < dim; ++a) sum[a] += q.w * v[a][q.j];
   });
-  const std::size_t g = b - p.soil_count;
   if (sum_w <= 0.0) {
     for (int a = 0; a < dim; ++a) v[a][b] = 0.0;
-    if constexpr (dim == 3) p.wall_slip_x[g] = p.wall_slip_y[g] = p.wall_slip_z[g] = 0.0;
     return;
   }
+  const std::size_t g = b - p.soil_count;
   const double s = p.wall_stick[g];
   if constexpr (dim == 2) {
     const double nx = p.wall_nx[g], ny = p.wall_ny[g], tx = -ny, ty = nx;
@@ -187,13 +185,11 @@ void mirror_velocity_onto_ghost(ParticlesOf<dim>& p, const PairList<dim>& nl, st
     v[0][b] = v_x - 2.0 * dn * nx - 2.0 * s * dt * tx;
     v[1][b] = v_y - 2.0 * dn * ny - 2.0 * s * dt * ty;
   } else {
-    const Vec3 mean{sum[0] / sum_w, sum[1] / sum_w, sum[2] / sum_w}, wall{p.wall_vx[g], p.wall_vy[g], p.wall_vz[g]},
-        n{p.wall_nx[g], p.wall_ny[g], p.wall_nz[g]};
-    const Vec3 ghost = ghost_velocity(mean, wall, n, s), slip = reversed_slip(mean, wall, n, s);
+    const Vec3 ghost = ghost_velocity({sum[0] / sum_w, sum[1] / sum_w, sum[2] / sum_w},
+                                {p.wall_vx[g], p.wall_vy[g], p.wall_vz[g]}, {p.wall_nx[g], p.wall_ny[g], p.wall_nz[g]},
+                                s);
     // The image across the further free-slip planes the ghost lies behind: v_a s_a.
     v[0][b] = p.image_sign_x[g] * ghost.x, v[1][b] = p.image_sign_y[g] * ghost.y, v[2][b] = p.image_sign_z[g] * ghost.z;
-    p.wall_slip_x[g] = p.image_sign_x[g] * slip.x, p.wall_slip_y[g] = p.image_sign_y[g] * slip.y,
-    p.wall_slip_z[g] = p.image_sign_z[g] * slip.z;
   }
 }
 

@@ -15,22 +15,6 @@
 /// ≤ 0.1^{3/2} ≈ 0.032, the same bound per axis) the uncorrected sum is kept. On the 3D lattice at
 /// h = 1.3Δp (cubic spline) det M is 0.98 inside, 0.29 on a free face, 0.081 on an edge of two faces
 /// and 0.021 at a corner of three, which keeps its uncorrected sum.
-///
-/// Ghosts carry their wall's image of the soil's velocity (stages/boundaries.h). A sticking wall's
-/// image, v_b = 2 v_w − v̄, reverses the tangential velocity: the shear across the wall, ∂v_t/∂n,
-/// then continues evenly through it, as no slip requires, but the derivatives along it, ∂v_t/∂t,
-/// change sign behind it. Soil that spreads over a floor and thins as it spreads (∂v_t/∂t =
-/// −∂v_n/∂n > 0) would read its ghosts as converging, and eq 11 would compact the particles near
-/// the floor however little the soil's volume changes: the axisymmetric column's spreading foot
-/// reached 2.5 ρ0 and sank into the floor (docs/validation/three-dimensions.md). In space a ghost
-/// pair therefore takes its derivative across the wall, along n, from the wall's image and its
-/// derivatives along the wall, along ∇W − (∇W·n)n, from the free-slip image v_b + u_b (u_b the
-/// ghost's wall_slip), which continues v_t evenly:
-///   L += V_b (v_b − v_i) ⊗ ∇W + V_b u_b ⊗ (∇W − (∇W·n)n),   Dρ/Dt −= m_b u_b·∇W (u_b ⊥ n),
-/// so that the divergence is the free-slip image's, whose normal velocity is the wall's own
-/// (n as the image across the further planes shows it, n_a s_a). On free-slip and sliding walls
-/// u_b = 0. The plane keeps the wall's image for both, which leaves its validated runs as they were
-/// (the paper's column's bottom row reaches 1.085 ρ0).
 #include <array>
 #include <span>
 
@@ -114,20 +98,6 @@ bool invert_moment(const std::array<std::array<double, dim>, dim>& m, std::array
   return true;
 }
 
-/// Ghost g's derivatives along its wall from the wall's free-slip image (above): V u ⊗ (∇W − (∇W·n)n)
-/// onto L and −m u·∇W onto Dρ/Dt.
-inline void add_free_slip_along_wall(const ParticlesOf<3>& p, std::size_t g, const std::array<double, 3>& grad,
-                                     double volume, double mass, VelocityGradientOf<3>& L, double& rate) {
-  const std::array<double, 3> u{p.wall_slip_x[g], p.wall_slip_y[g], p.wall_slip_z[g]};
-  if (u[0] == 0.0 && u[1] == 0.0 && u[2] == 0.0) return;  // a free-slip or sliding wall
-  const std::array<double, 3> n{p.image_sign_x[g] * p.wall_nx[g], p.image_sign_y[g] * p.wall_ny[g],
-                                p.image_sign_z[g] * p.wall_nz[g]};
-  const double across = dot(grad, n);
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) L.l[a][b] += volume * u[a] * (grad[b] - across * n[b]);
-  rate -= mass * dot(u, grad);
-}
-
 /// `volume_of(j)` gives m_j/ρ_j.
 template <int dim, class Volume>
 KinematicRatesOf<dim> kinematic_rates_with(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t i,
@@ -143,8 +113,6 @@ KinematicRatesOf<dim> kinematic_rates_with(const ParticlesOf<dim>& p, const Pair
     for (int a = 0; a < dim; ++a)
       for (int b = 0; b < dim; ++b) L.l[a][b] += volume * dv[a] * q.g[b];
     rate -= p.mass[j] * dot(dv, q.g);
-    if constexpr (dim == 3)
-      if (j >= p.soil_count) add_free_slip_along_wall(p, j - p.soil_count, q.g, volume, p.mass[j], L, rate);
     if (corrected)
       for (int a = 0; a < dim; ++a)
         for (int b = 0; b < dim; ++b) moment[a][b] -= volume * q.r[a] * q.g[b];
