@@ -57,12 +57,6 @@ class Collapse {
   const SolverSetup& setup() const { return setup_; }
 
  private:
-  static Particles geostatic_particles(const Scene& scene) {
-    Particles p = build_particles(scene);
-    set_geostatic_state(p, scene);
-    return p;
-  }
-
   const Scene& scene_;
   Particles particles_;
   SolverSetup setup_;

@@ -1,16 +1,19 @@
 #pragma once
 /// @file
 /// One collapse of a scene of space (sph/scene_3d.h), from the scene to the deposit: the particles
-/// and their geostatic state (initial_state_3d.h), the solver setup (solver_3d.cpp), the time loop
+/// and their geostatic state (initial_state_3d.h), relaxed under gravity first if the scene asks
+/// (gravity_loading.h), the solver setup (solver_3d.cpp), the time loop
 /// of sph/solver.h instantiated for three dimensions, and the deposit measures of its shape: the
 /// axisymmetric column's (analysis/axisymmetric_deposit.h) or the slab's, the 2D column's measures
 /// of the particles seen along z.
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
 
 #include "sph/analysis/axisymmetric_deposit.h"
 #include "sph/analysis/deposit.h"
+#include "sph/gravity_loading.h"
 #include "sph/initial_state.h"
 #include "sph/initial_state_3d.h"
 #include "sph/solver.h"
@@ -19,11 +22,15 @@ namespace soilsph::sph {
 
 class Collapse3 {
  public:
+  /// With [initial] stress = "gravity-loading" the soil is relaxed first (gravity_loading.h).
   explicit Collapse3(const Scene3& scene)
       : scene_(scene),
         particles_(geostatic_particles(scene)),
         setup_(make_solver_setup(scene)),
-        groups_(material_groups(scene.materials, particles_)) {}
+        groups_(material_groups(scene.materials, particles_)) {
+    if (scene.initial.stress == InitialStress::GravityLoading)
+      gravity_loading_ = relax_under_gravity(scene, particles_);
+  }
   /// A collapse that continues from `particles` (a checkpoint's) rather than the initial column: the
   /// ghosts' wall attributes, which a checkpoint does not hold, and the soil's materials come from the
   /// scene's particles as built.
@@ -62,14 +69,11 @@ class Collapse3 {
   }
 
   const ParticlesOf<3>& particles() const { return particles_; }
+  /// The relaxation's outcome, if this collapse ran one (not when continuing from a checkpoint).
+  const std::optional<GravityLoadingReport>& gravity_loading() const { return gravity_loading_; }
   const SolverSetupOf<3>& setup() const { return setup_; }
 
  private:
-  static ParticlesOf<3> geostatic_particles(const Scene3& scene) {
-    ParticlesOf<3> p = build_particles_3d(scene);
-    set_geostatic_state_3d(p, scene);
-    return p;
-  }
   std::vector<Vec3> soil_positions() const {
     std::vector<Vec3> x(particles_.soil_count);
     for (std::size_t i = 0; i < x.size(); ++i) x[i] = particles_.position(i);
@@ -80,6 +84,7 @@ class Collapse3 {
   ParticlesOf<3> particles_;
   SolverSetupOf<3> setup_;
   MaterialGroups groups_;
+  std::optional<GravityLoadingReport> gravity_loading_;
 };
 
 }  // namespace soilsph::sph

@@ -15,11 +15,15 @@ inline double max_speed(const Particles& p) {
   return std::sqrt(v2);
 }
 
-/// Kinetic energy of the soil per metre of thickness, Σ ½ m v² (J/m).
-inline double kinetic_energy(const Particles& p) {
+/// Kinetic energy of the soil, Σ ½ m v²: per metre of thickness in the plane (J/m), J in space.
+template <int dim>
+double kinetic_energy(const ParticlesOf<dim>& p) {
   double e = 0.0;
-  for (std::size_t i = 0; i < p.soil_count; ++i)
-    e += 0.5 * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+  for (std::size_t i = 0; i < p.soil_count; ++i) {
+    double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+    if constexpr (dim == 3) v2 += p.vz[i] * p.vz[i];
+    e += 0.5 * p.mass[i] * v2;
+  }
   return e;
 }
 

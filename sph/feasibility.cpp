@@ -43,11 +43,6 @@ std::string particle_count_keys(const Geometry3& g) {
   return "[scene] particle_spacing, floor_margin and the [[regions]]";
 }
 
-/// The soil's height along −g between its lowest and highest particle centres (m): the H of the
-/// free-fall speed √(2 g H).
-double soil_height(const Geometry& g) { return g.soil_extent.height; }
-double soil_height(const Geometry3& g) { return g.column_height; }  // both 3D shorthands: H0
-
 /// The count-independent part of an estimate: the P-wave speed, the step at rest, the steps to the
 /// end time and the run time at kAssumedThroughput for `soil` + `boundary` particles.
 template <int dim>

@@ -17,10 +17,12 @@
 /// starts from the relaxed stress with the scene's OCR (the model's initial_preconsolidation: for
 /// MCC p_c = max(OCR p_c,yield, floor), so a relaxed stress on the yield surface stays on it at
 /// OCR = 1), and the plastic strain of the relaxation is not counted.
+/// One implementation for the plane and for space: in space M is the soil's mass (kg), in the plane
+/// its mass per metre of thickness, and Δσ_ij runs over the six components (the plane's three).
 #include <cstddef>
 
 #include "sph/particles.h"
-#include "sph/scene.h"
+#include "sph/scene_3d.h"
 
 namespace soilsph::sph {
 
@@ -32,9 +34,11 @@ struct GravityLoadingReport {
   double stress_change = 0.0;   ///< max |Δσ_ij| over the last step / (ρ |g| H)
 };
 
-/// Relaxes the soil of `particles` (built and set by set_geostatic_state for `scene`) as above and
-/// leaves it at rest in the relaxed state. Throws std::runtime_error, naming the tolerances reached,
-/// if the relaxation has not settled by [initial] gravity_loading_max_time.
-GravityLoadingReport relax_under_gravity(const Scene& scene, Particles& particles);
+/// Relaxes the soil of `particles` (the scene's geostatic_particles, initial_state.h and
+/// initial_state_3d.h) as above and leaves it at rest in the relaxed state. Throws
+/// std::runtime_error, naming the tolerances reached, if the relaxation has not settled by
+/// [initial] gravity_loading_max_time. Instantiated for dim = 2 (Scene) and 3 (Scene3).
+template <int dim>
+GravityLoadingReport relax_under_gravity(const SceneOf<dim>& scene, ParticlesOf<dim>& particles);
 
 }  // namespace soilsph::sph

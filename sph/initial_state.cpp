@@ -96,6 +96,12 @@ double lowest_outline_height(const Geometry& g) {
 }
 }  // namespace
 
+Particles geostatic_particles(const Scene& scene) {
+  Particles p = build_particles(scene);
+  set_geostatic_state(p, scene);
+  return p;
+}
+
 Particles build_particles(const Scene& scene) {
   const Geometry& g = scene.geometry;
   const double dx = g.particle_spacing;

@@ -38,6 +38,10 @@ void copy_wall_attributes(ParticlesOf<dim>& to, const ParticlesOf<dim>& from);
 /// and σ_h uses its material's K0 (InitialConditions::material_lateral_stress_ratio).
 void set_geostatic_state(Particles& particles, const Scene& scene);
 
+/// The scene's particles as a collapse starts from them, before any gravity-loading relaxation:
+/// built (build_particles) and in their geostatic state (set_geostatic_state).
+Particles geostatic_particles(const Scene& scene);
+
 /// The smallest lateral stress ratio K0 (σxx/σyy = σzz/σyy) for which the geostatic stress of the
 /// column lies inside the material's yield surface, found by bisection on the model's own yield
 /// function at the column's base (the strictest depth: the D-P cone's distance grows with depth

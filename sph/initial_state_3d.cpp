@@ -192,6 +192,12 @@ Mat3 geostatic_stress_3d(const Geometry3& g, double density, double k0, double s
   return sigma;
 }
 
+ParticlesOf<3> geostatic_particles(const Scene3& scene) {
+  ParticlesOf<3> p = build_particles_3d(scene);
+  set_geostatic_state_3d(p, scene);
+  return p;
+}
+
 void set_geostatic_state_3d(ParticlesOf<3>& p, const Scene3& scene) {
   const Geometry3& g = scene.geometry;
   const bool several = scene.materials.size() > 1, local = scene.initial.stress != InitialStress::FlatSurface;

@@ -33,6 +33,10 @@ Mat3 geostatic_stress_3d(const Geometry3& g, double density, double k0, double s
 /// stress lies outside the yield surface.
 void set_geostatic_state_3d(ParticlesOf<3>& particles, const Scene3& scene);
 
+/// The scene's particles as a collapse starts from them, before any gravity-loading relaxation:
+/// built (build_particles_3d) and in their geostatic state (set_geostatic_state_3d).
+ParticlesOf<3> geostatic_particles(const Scene3& scene);
+
 /// The smallest K0 for which the geostatic stress at the soil's base lies inside the material's
 /// yield surface (geostatic_state.h); 0 if every K0 > 0 is.
 double smallest_admissible_lateral_stress_ratio_3d(const Material& material, const Geometry3& geometry);

@@ -123,8 +123,8 @@ WallMotionOf<3> read_motion(const TableReader& t, const toml::table& table, toml
 
 }  // namespace
 
-toml::array read_boundaries_3d(const toml::table& root, const std::string& source,
-                               std::vector<Wall3>& walls) {
+toml::array read_boundaries_3d(const toml::table& root, const std::string& source, std::vector<Wall3>& walls,
+                               std::vector<Wall3>& withdrawn) {
   toml::array resolved;
   std::vector<std::string> names;
   for (const Wall3& w : walls) names.push_back(w.label);
@@ -149,7 +149,8 @@ toml::array read_boundaries_3d(const toml::table& root, const std::string& sourc
     names.push_back(wall.label);
     r.insert("name", wall.label);
     t.reject_unknown_keys();
-    if (wall.motion.removed_at > 0.0) walls.push_back(std::move(wall));  // removed at 0: never there
+    (wall.motion.removed_at > 0.0 ? walls : withdrawn)
+        .push_back(std::move(wall));  // removed at 0: never there
     resolved.push_back(std::move(r));
   }
   return resolved;

@@ -15,9 +15,10 @@
 namespace soilsph::sph {
 
 /// Appends the [[boundaries]] of `root` to `walls` (the shorthand's, whose labels they may not
-/// repeat); a wall removed at t = 0 is never there and not appended. Returns the tables as read,
-/// defaults resolved (the scene as run).
-toml::array read_boundaries_3d(const toml::table& root, const std::string& source, std::vector<Wall3>& walls);
+/// repeat); a wall removed at t = 0 is never there in the run and goes to `withdrawn` instead
+/// (Geometry3::withdrawn_walls). Returns the tables as read, defaults resolved (the scene as run).
+toml::array read_boundaries_3d(const toml::table& root, const std::string& source, std::vector<Wall3>& walls,
+                               std::vector<Wall3>& withdrawn);
 
 /// `domain` grown to hold every vertex of `walls`, where it starts and where its motion ends, with
 /// `margin` around each (the ghost layers and the kernel support), as the 2D scene's domain.

@@ -65,6 +65,11 @@ struct Geometry {
   }
 };
 
+/// The soil's height between its lowest and highest particle centres (m), at least Δp.
+inline double soil_height(const Geometry& g) {
+  return g.soil_extent.height;
+}
+
 /// What releases the column's soil and what it spreads on, [scene] keys shared by the 2D column and
 /// the 3D slab: `wall_withdrawal` ("instant", "none" or "lift"), `lift_speed` (with "lift" only;
 /// otherwise 0) and `floor_length` (default 6 W).

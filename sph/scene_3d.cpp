@@ -179,9 +179,9 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
       wall({x_lo, y, 0.0}, {0.0, 0.0, T}, {along, 0.0, 0.0}, WallKind::NoSlip, "floor", source));
   g.walls.push_back(
       wall({x_wall, y, 0.0}, {0.0, 0.0, T}, {0.0, up, 0.0}, WallKind::FreeSlip, "fixed_wall", source));
-  if (g.wall_withdrawal != WallWithdrawal::Instant)
-    g.walls.push_back(wall({-0.5 * dx, y, 0.0}, {0.0, up, 0.0}, {0.0, 0.0, T}, WallKind::FreeSlip,
-                           "removable_wall", source));
+  (g.wall_withdrawal != WallWithdrawal::Instant ? g.walls : g.withdrawn_walls)
+      .push_back(wall({-0.5 * dx, y, 0.0}, {0.0, up, 0.0}, {0.0, 0.0, T}, WallKind::FreeSlip,
+                      "removable_wall", source));
   if (g.wall_withdrawal == WallWithdrawal::Lift) {
     // The 2D column's gate (geometry/column.cpp): up at lift_speed until its lower end, from −Δp/2,
     // has passed H + 2h + Δp, then removed.
@@ -253,7 +253,7 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
   } else {
     geometry = read_geometry(t, source, gravity);
   }
-  const toml::array boundaries = read_boundaries_3d(root, source, geometry.walls);
+  const toml::array boundaries = read_boundaries_3d(root, source, geometry.walls, geometry.withdrawn_walls);
   if (!boundaries.empty())
     geometry.domain = domain_around_walls(
         geometry.domain, geometry.walls,
@@ -268,11 +268,6 @@ Scene3 read_scene_3d(const toml::table& root, const std::string& source) {
   Scene3 scene{read_settings(tables, used, soil), geometry, {}, std::move(region_material)};
   toml::table deposit_resolved;
   if (regions) read_deposit_3d(root, source, scene.geometry, deposit_resolved);
-  if (scene.initial.stress == InitialStress::GravityLoading)
-    tables.initial.fail(
-        "stress",
-        "= \"gravity-loading\" relaxes the soil with the 2D solver; a 3D scene starts "
-        "from \"flat-surface\" or \"local-surface\" (the top of each particle's lattice column)");
   toml::array gauges_resolved;
   scene.gauges = read_gauges<3>(root, source, gauges_resolved);
   reject_unknown_keys(tables);

@@ -13,6 +13,7 @@
 /// y is up, as in 2D: gravity defaults to (0, −9.81, 0).
 #include <span>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -69,6 +70,10 @@ struct Geometry3 {
                      ///< regions: [scene] lattice_origin, default (Δp/2, Δp/2, Δp/2))
   std::vector<Wall3> walls;  ///< every wall present at t = 0, the shape's then the [[boundaries]] (a wall
                              ///< withdrawn at t = 0 is never built)
+  /// The walls withdrawn at t = 0 (the slab's removable wall with "instant", [[boundaries]] with
+  /// removed_at = 0): never built for the run; they hold the soil while [initial] "gravity-loading"
+  /// relaxes it before t = 0 (sph/gravity_loading.h), as a 2D scene's do.
+  std::vector<Wall3> withdrawn_walls;
   Box3 domain;               ///< no soil particle may leave it: the floor's extent, ghosts and kernel support
                              ///< around it, up to twice the soil's height above the floor
   double floor_level;        ///< the floor surface's height y (m), −Δp/2: the potential-energy datum
@@ -91,12 +96,22 @@ struct Geometry3 {
   double height(Vec3 p) const { return -dot(down(), p); }
 };
 
+/// The soil's height between its lowest and highest particle centres (m), at least Δp (as the 2D
+/// SoilExtent::height): column_height, which [[regions]] set so.
+inline double soil_height(const Geometry3& g) {
+  return g.column_height;
+}
+
 /// A 3D scene.
 struct Scene3 : SceneSettings {
   Geometry3 geometry;
   std::vector<GaugeOf<3>> gauges;  ///< [[gauges]], positions [x, y, z]
   std::vector<int> region_material;  ///< each region's index into `materials` (the shorthands: {0})
 };
+
+/// The scene of a dimension: Scene in the plane, Scene3 in space.
+template <int dim>
+using SceneOf = std::conditional_t<dim == 2, Scene, Scene3>;
 
 /// The box of the floor's extent [x_lo, x_hi] × [z_lo, z_hi] grown by the ghost layers and the
 /// kernel support, from below the floor's ghosts up to twice the soil's height above the floor (or

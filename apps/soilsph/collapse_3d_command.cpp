@@ -122,6 +122,10 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
     for (const char* key : {"azimuth_span_deg", "runout_radius_m", "runout_radius_spread_m", "height_m", "sector_runout_m"})
       j.raw(key, "null");
   }
+  if (const std::string initial_stress =
+          initial_stress_record(scene.initial.stress, collapse.gravity_loading()).json();
+      !initial_stress.empty())
+    j.raw("initial_stress", initial_stress);
   j.add("version", std::string(kVersion)).add("command_line", invocation()).raw("inputs", sph::scene_json(scene));
   return j.str();
 }
@@ -151,6 +155,7 @@ void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const f
   (void)feasible_estimate(scene);  // refuses a scene it cannot run, before anything is allocated
   std::optional<sph::CheckpointOf<3>> resumed = resumed_checkpoint<3>(o, dir);
   sph::Collapse3 collapse = start_collapse<sph::Collapse3>(scene, resumed);
+  report_gravity_loading(collapse.gravity_loading(), scene.initial.gravity_loading);
   std::optional<sph::HistoriesOf<3>> histories = scene_histories<3>(scene, collapse.particles(), collapse.setup());
   std::cout << "soilsph collapse (3D): "
             << (resumed ? "resumed at t = " + std::to_string(resumed->loop.stats.end_time) + " s, " : "")

@@ -90,14 +90,7 @@ sph::Summary describe(const sph::Scene& scene, const sph::Collapse& collapse, in
   s.command_line = invocation();
   s.inputs_json = sph::scene_json(scene);
   s.boundaries = scene.geometry.layout.walls;
-  s.initial_stress_method = scene.initial.stress == sph::InitialStress::FlatSurface    ? "flat-surface"
-                            : scene.initial.stress == sph::InitialStress::LocalSurface ? "local-surface"
-                                                                                       : "gravity-loading";
-  if (const auto& relaxed = collapse.gravity_loading()) {
-    s.relaxation_steps = static_cast<long long>(relaxed->steps);
-    s.relaxation_kinetic_energy = relaxed->kinetic_energy;
-    s.relaxation_stress_change = relaxed->stress_change;
-  }
+  s.initial_stress = initial_stress_record(scene.initial.stress, collapse.gravity_loading());
   return s;
 }
 
@@ -146,17 +139,6 @@ sph::AnyScene scene_to_run(const CollapseOptions& o, const fs::path& dir) {
 sph::Collapse start_collapse(const sph::Scene& scene, std::optional<sph::Checkpoint>& resumed) {
   return blaming_overrides(scene.overrides,
                            [&] { return cli::start_collapse<sph::Collapse>(scene, resumed); });
-}
-
-void report_gravity_loading(const sph::Collapse& collapse, const sph::Scene& scene) {
-  const auto& relaxed = collapse.gravity_loading();
-  if (!relaxed) return;
-  std::cout << "gravity loading: settled after " << relaxed->steps << " steps (" << relaxed->time
-            << " s of relaxation): kinetic energy / (M g H) = " << relaxed->kinetic_energy << " < "
-            << scene.initial.gravity_loading.kinetic_tolerance
-            << ", stress change per step / (rho g H) = " << relaxed->stress_change << " < "
-            << scene.initial.gravity_loading.stress_tolerance
-            << "; the run starts from the relaxed soil at rest at t = 0" << std::endl;
 }
 
 /// A checkpoint must hold the soil its scene builds.
@@ -271,7 +253,7 @@ void run_collapse(const CollapseOptions& o) {
   const sph::ThreadTuner tuner = thread_tuner(o.threads);
   const sph::RunEstimate estimate = feasible_estimate(scene);
   sph::Collapse collapse = start_collapse(scene, resumed);
-  report_gravity_loading(collapse, scene);
+  report_gravity_loading(collapse.gravity_loading(), scene.initial.gravity_loading);
   if (resumed) check_resumed_particles(collapse, estimate, dir);
   std::optional<sph::Histories> histories = scene_histories<2>(scene, collapse.particles(), collapse.setup());
   announce_run(o, scene, collapse, estimate, tuner, resumed, dir);

@@ -57,6 +57,31 @@ fs::path run_folder(const CollapseOptions& o) {
   return fs::path("results") / fs::path(o.scene).stem();
 }
 
+sph::InitialStressRecord initial_stress_record(sph::InitialStress method,
+                                               const std::optional<sph::GravityLoadingReport>& relaxed) {
+  sph::InitialStressRecord r;
+  r.method = method == sph::InitialStress::FlatSurface    ? "flat-surface"
+             : method == sph::InitialStress::LocalSurface ? "local-surface"
+                                                          : "gravity-loading";
+  if (relaxed) {
+    r.relaxation_steps = static_cast<long long>(relaxed->steps);
+    r.relaxation_kinetic_energy = relaxed->kinetic_energy;
+    r.relaxation_stress_change = relaxed->stress_change;
+  }
+  return r;
+}
+
+void report_gravity_loading(const std::optional<sph::GravityLoadingReport>& relaxed,
+                            const sph::GravityLoading& settings) {
+  if (!relaxed) return;
+  std::cout << "gravity loading: settled after " << relaxed->steps << " steps (" << relaxed->time
+            << " s of relaxation): kinetic energy / (M g H) = " << relaxed->kinetic_energy << " < "
+            << settings.kinetic_tolerance
+            << ", stress change per step / (rho g H) = " << relaxed->stress_change << " < "
+            << settings.stress_tolerance << "; the run starts from the relaxed soil at rest at t = 0"
+            << std::endl;
+}
+
 std::string stop_reason(const sph::RunStatistics& stats, const StopSignal& signal) {
   return stats.stop == sph::StopReason::Rest ? "at rest"
          : stats.stop == sph::StopReason::EndTime

@@ -13,10 +13,12 @@
 
 #include "apps/soilsph/stop_signal.h"
 #include "sph/frame_buffers.h"
+#include "sph/gravity_loading.h"
 #include "sph/output/checkpoint.h"
 #include "sph/output/frame_writer.h"
 #include "sph/output/histories.h"
 #include "sph/output/progress.h"
+#include "sph/output/summary.h"
 #include "sph/scene_3d.h"
 #include "sph/solver.h"
 #include "sph/thread_tuner.h"
@@ -122,6 +124,14 @@ sph::RunStatistics run_with_frames(Collapse& collapse, const Scene& scene, const
     throw;
   }
 }
+
+/// summary.json's "initial_stress" of a run: the scene's [initial] stress method and the relaxation
+/// this process ran, if any (none when a run is resumed: its soil was relaxed before t = 0).
+sph::InitialStressRecord initial_stress_record(sph::InitialStress method,
+                                               const std::optional<sph::GravityLoadingReport>& relaxed);
+/// The run log's line on the relaxation, if one ran.
+void report_gravity_loading(const std::optional<sph::GravityLoadingReport>& relaxed,
+                            const sph::GravityLoading& settings);
 
 /// Why a run stopped, as summary.json's stop_reason says it: "at rest", "end time" or "signal SIGTERM".
 std::string stop_reason(const sph::RunStatistics& stats, const StopSignal& signal);

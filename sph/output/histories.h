@@ -18,9 +18,6 @@
 namespace soilsph::sph {
 
 template <int dim>
-using SceneOf = std::conditional_t<dim == 2, Scene, Scene3>;
-
-template <int dim>
 class HistoriesOf {
  public:
   /// For `scene` with its particles as they start (or as a checkpoint holds them, x0, y0[, z0]

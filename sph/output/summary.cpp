@@ -47,6 +47,16 @@ std::string boundaries_json(const std::vector<Wall>& walls) {
 
 }  // namespace
 
+std::string InitialStressRecord::json() const {
+  if (method == "flat-surface") return "";
+  std::string o = "{\"method\": " + quoted(method);
+  if (relaxation_steps >= 0)
+    o += ", \"steps\": " + std::to_string(relaxation_steps) +
+         ", \"kinetic_energy\": " + number(relaxation_kinetic_energy) +
+         ", \"stress_change\": " + number(relaxation_stress_change);
+  return o + "}";
+}
+
 std::string summary_json(const Summary& s) {
   std::string out = "{\n";
   bool first = true;
@@ -81,13 +91,8 @@ std::string summary_json(const Summary& s) {
   field("complete", s.complete ? "true" : "false");
   field("stop_reason", quoted(s.stop_reason));
   field("resumed_from", s.resumed_from >= 0 ? number(s.resumed_from) : "null");
-  if (s.initial_stress_method != "flat-surface") {
-    std::string o = "{\"method\": " + quoted(s.initial_stress_method);
-    if (s.relaxation_steps >= 0)
-      o += ", \"steps\": " + std::to_string(s.relaxation_steps) + ", \"kinetic_energy\": " +
-           number(s.relaxation_kinetic_energy) + ", \"stress_change\": " + number(s.relaxation_stress_change);
-    field("initial_stress", o + "}");
-  }
+  if (const std::string initial_stress = s.initial_stress.json(); !initial_stress.empty())
+    field("initial_stress", initial_stress);
   field("version", quoted(s.version));
   field("command_line", quoted(s.command_line));
   std::string materials = "[";

@@ -11,6 +11,18 @@
 
 namespace soilsph::sph {
 
+/// summary.json's "initial_stress", in 2D and 3D runs alike: the [initial] stress method and, for
+/// "gravity-loading", the relaxation's steps, kinetic energy / (M|g|H) and stress change per step /
+/// (ρ|g|H) at its end.
+struct InitialStressRecord {
+  std::string method = "flat-surface";
+  long long relaxation_steps = -1;  ///< < 0: no relaxation ran in this process (a resumed run)
+  double relaxation_kinetic_energy = 0, relaxation_stress_change = 0;
+  /// The field's JSON object; "" for "flat-surface", the default, whose runs have no such field (so
+  /// that runs of scenes without the key keep their summary).
+  std::string json() const;
+};
+
 /// What a run reports at its end; SI units, angles in degrees.
 struct Summary {
   /// One of the scene's materials: its [materials.NAME] name ("" for [material]), model, integrator
@@ -41,12 +53,7 @@ struct Summary {
   std::string inputs_json;   ///< the scene as run (Scene::resolved) as a JSON object, or empty
   double resumed_from = -1;  ///< time of the checkpoint this run resumed from (s); < 0: none
   std::vector<Wall> boundaries;  ///< the scene's walls: label, kind, points and motion (pictures draw them)
-  /// "initial_stress" (written unless "flat-surface", the default, so that runs of scenes without
-  /// the key keep their summary): the [initial] stress method and, for "gravity-loading", the
-  /// relaxation's steps, kinetic energy / (M|g|H) and stress change per step / (ρ|g|H) at its end.
-  std::string initial_stress_method = "flat-surface";
-  long long relaxation_steps = -1;  ///< < 0: no relaxation ran in this process
-  double relaxation_kinetic_energy = 0, relaxation_stress_change = 0;
+  InitialStressRecord initial_stress;  ///< "initial_stress", unless "flat-surface"
 };
 
 /// Writes the summary as one JSON object (numbers in shortest round-trip form, non-finite

@@ -133,8 +133,9 @@ TEST_CASE("every refusal of a 3D scene names its key", "[scene3d]") {
       {"scene.colum_radius=0.04", "colum_radius"},  // unknown key
       {"scene.column_width=0.04", "column_width"},  // both shorthands
       {"scene.boundary_layers=1", "boundary_layers"},
-      {"initial.stress=\"gravity-loading\"", "stress"},
-      {"initial.lateral_stress_ratio=0.1", "lateral_stress_ratio"},  // outside the D-P cone
+      {"initial.stress=\"gravity-relaxed\"", "stress"},
+      {"initial.gravity_loading_damping=0.05", "gravity_loading_damping"},  // without "gravity-loading"
+      {"initial.lateral_stress_ratio=0.1", "lateral_stress_ratio"},         // outside the D-P cone
       {"numerics.cfl=5.0", "cfl"},
       {"output.frame_interval=2.0", "frame_interval"},
       {"material.friction_angle=95.0", "friction_angle"},
