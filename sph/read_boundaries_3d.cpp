@@ -86,19 +86,6 @@ PlanarWall read_polygon(const TableReader& t, const toml::table& table, toml::ta
   return wall;
 }
 
-/// kind and its friction angle, as a 2D wall's (geometry/read_layout.cpp).
-void read_kind(const TableReader& t, Wall3& wall, toml::table& resolved) {
-  const std::string kind = t.choice("kind", {"free-slip", "no-slip", "frictional"});
-  resolved.insert("kind", kind);
-  wall.kind = kind == "free-slip" ? WallKind::FreeSlip
-              : kind == "no-slip" ? WallKind::NoSlip
-                                  : WallKind::Frictional;
-  if (wall.kind == WallKind::Frictional) {
-    wall.friction_angle = t.number("wall_friction_angle", Range::open(0.0, 90.0), "degrees");
-    resolved.insert("wall_friction_angle", wall.friction_angle);
-  }
-}
-
 /// removed_at, and velocity from start to end, as a 2D wall's.
 WallMotionOf<3> read_motion(const TableReader& t, const toml::table& table, toml::table& resolved) {
   WallMotionOf<3> motion;
@@ -137,7 +124,8 @@ toml::array read_boundaries_3d(const toml::table& root, const std::string& sourc
     r.insert("shape", shape);
     Wall3 wall;
     wall.plane = shape == "rectangle" ? read_rectangle(t, *table, r) : read_polygon(t, *table, r);
-    read_kind(t, wall, r);
+    const WallKindRead kind = read_wall_kind(t, r);
+    wall.kind = kind.kind, wall.friction_angle = kind.friction_angle;
     wall.motion = read_motion(t, *table, r);
     wall.label = t.has("name") ? t.word("name") : "boundary_" + std::to_string(k);
     if (std::find(names.begin(), names.end(), wall.label) != names.end())

@@ -55,6 +55,7 @@ struct Wall {
   /// Its name in the run's histories (boundary_forces.csv): [[boundaries]] name, by default
   /// "boundary_K" for the K-th table; the column's are "floor", "fixed_wall" and "removable_wall".
   std::string label;
+  bool symmetry_plane = false;  ///< kind = "symmetry": free slip, reported as "symmetry"
 };
 
 struct Layout {

@@ -19,6 +19,32 @@ toml::array as_array(Vec2 v) { return toml::array{v.x, v.y}; }
 
 }  // namespace
 
+WallKindRead read_wall_kind(const TableReader& t, toml::table& resolved) {
+  const std::string kind = t.choice("kind", {"free-slip", "no-slip", "frictional", "symmetry"});
+  resolved.insert("kind", kind);
+  if (kind == "symmetry") {
+    // The plane of a symmetric problem's mirror image: what crosses it comes back from the other
+    // half, so it holds no shear (free slip) and stays where the symmetry puts it.
+    if (t.has("wall_friction_angle"))
+      t.fail("wall_friction_angle",
+             "is not taken with kind = \"symmetry\": a symmetry plane mirrors the soil without friction "
+             "(free slip); a rough wall is kind = \"frictional\"");
+    for (const std::string_view key : {"velocity", "start", "end", "removed_at"})
+      if (t.has(key))
+        t.fail(key,
+               "is not taken with kind = \"symmetry\": a symmetry plane stays where the symmetry puts it "
+               "(a wall that moves or goes is kind = \"free-slip\")");
+    return {.kind = WallKind::FreeSlip, .friction_angle = 0.0, .symmetry_plane = true};
+  }
+  const WallKind k = kind == "free-slip" ? WallKind::FreeSlip : kind == "no-slip" ? WallKind::NoSlip : WallKind::Frictional;
+  double friction_angle = 0.0;
+  if (k == WallKind::Frictional) {
+    friction_angle = t.number("wall_friction_angle", Range::open(0.0, 90.0), "degrees");
+    resolved.insert("wall_friction_angle", friction_angle);
+  }
+  return {.kind = k, .friction_angle = friction_angle, .symmetry_plane = false};
+}
+
 std::vector<std::pair<const toml::table*, std::string>> tables_of(const toml::table& root, const std::string& source,
                                                                   std::string_view name) {
   std::vector<std::pair<const toml::table*, std::string>> tables;
@@ -153,6 +179,18 @@ std::vector<Region> read_region(const toml::table& table, const std::string& lab
   return {region};
 }
 
+/// A symmetry line mirrors the soil across one line: its points must lie on it.
+void check_straight(const TableReader& t, const std::vector<Vec2>& points) {
+  const Vec2 first = points.front(), along = points.back() - first;
+  for (std::size_t k = 1; k + 1 < points.size(); ++k) {
+    const Vec2 d = points[k] - first;
+    if (std::abs(cross(d, along)) > 1e-9 * norm(d) * norm(along))
+      t.fail("points", "point " + std::to_string(k + 1) +
+                           " is off the line through the first and the last: a symmetry line (kind = "
+                           "\"symmetry\") is straight (a bent wall is kind = \"free-slip\")");
+  }
+}
+
 Wall read_wall(const toml::table& table, const std::string& label, const std::string& source, toml::table& resolved) {
   const TableReader t(table, source, label);
   const std::string where = source + ": [" + label + "]";
@@ -171,13 +209,9 @@ Wall read_wall(const toml::table& table, const std::string& label, const std::st
     }
   }
   resolved.insert("points", array_of(wall.points));
-  const std::string kind = t.choice("kind", {"free-slip", "no-slip", "frictional"});
-  resolved.insert("kind", kind);
-  wall.kind = kind == "free-slip" ? WallKind::FreeSlip : kind == "no-slip" ? WallKind::NoSlip : WallKind::Frictional;
-  if (wall.kind == WallKind::Frictional) {
-    wall.friction_angle = t.number("wall_friction_angle", Range::open(0.0, 90.0), "degrees");
-    resolved.insert("wall_friction_angle", wall.friction_angle);
-  }
+  const WallKindRead kind = read_wall_kind(t, resolved);
+  wall.kind = kind.kind, wall.friction_angle = kind.friction_angle, wall.symmetry_plane = kind.symmetry_plane;
+  if (wall.symmetry_plane) check_straight(t, wall.points);
   if (t.has("removed_at")) {
     wall.motion.removed_at = t.number("removed_at", Range::non_negative(), "s");
     resolved.insert("removed_at", wall.motion.removed_at);

@@ -10,6 +10,10 @@
 #include "sph/geometry/layout.h"
 #include "sph/geometry/vec3.h"
 
+namespace soilsph {
+class TableReader;
+}
+
 namespace soilsph::sph {
 
 struct ReadLayout {
@@ -24,6 +28,20 @@ ReadLayout read_layout(const toml::table& root, const std::string& source, doubl
 
 /// The boundaries alone (a column scene may add walls, e.g. a gate, to those of its shorthand).
 toml::array read_boundaries(const toml::table& root, const std::string& source, std::vector<Wall>& walls);
+
+/// How a [[boundaries]] wall acts on the soil, as its table gives it.
+struct WallKindRead {
+  WallKind kind;
+  double friction_angle;  ///< degrees, Frictional only; otherwise 0
+  bool symmetry_plane;    ///< kind = "symmetry"
+};
+
+/// `kind` ("free-slip", "no-slip", "frictional" or "symmetry") and, for "frictional",
+/// `wall_friction_angle` (0 < δ < 90 degrees), recorded in `resolved` as written. A symmetry plane
+/// is the mirror of a symmetric problem run in part: a free-slip wall (the same ghosts, the same
+/// mirroring) that takes no friction angle and does not move (`velocity`, `start`, `end` or
+/// `removed_at` with it is an error naming the file, the table and the key).
+WallKindRead read_wall_kind(const TableReader& t, toml::table& resolved);
 
 /// The tables of the array of tables `name` in `root` (empty if absent), each with its label
 /// "name #k" for messages; throws ParameterError if `name` is not an array of tables.

@@ -30,7 +30,7 @@ std::string boundaries_json(const std::vector<Wall>& walls) {
     const Wall& w = walls[k];
     out += k ? ",\n    {" : "\n    {";
     out += quoted("name") + ": " + quoted(w.label) + ", " + quoted("kind") + ": " +
-           quoted(kKinds[static_cast<int>(w.kind)]) + ", " + quoted("points") + ": [";
+           quoted(w.symmetry_plane ? "symmetry" : kKinds[static_cast<int>(w.kind)]) + ", " + quoted("points") + ": [";
     for (std::size_t i = 0; i < w.points.size(); ++i) {
       if (i) out += ", ";
       out += pair(w.points[i]);

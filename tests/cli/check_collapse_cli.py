@@ -5,6 +5,7 @@
   and 3D) it prints the particle counts collapse announces and the scene that collapse then writes
   as run;
 - collapse without --out writes to results/<the scene file's stem>;
+- a half cylinder of space without a mirror in its cut plane is warned of, with one not;
 - a scene of regions without [deposit] reports its deposit measures as undefined (null in
   summary.json, a console line asking for [deposit]); the region column with its [deposit] table
   measures them.
@@ -84,10 +85,52 @@ with tempfile.TemporaryDirectory() as temp:
     collapsed = check_agrees("two-material-column", QUICK[:4], QUICK[4:])
     check_agrees("axisymmetric-column", ["--set", "scene.particle_spacing=0.01", "--set", "scene.end_time=0.04"],
                  ["--threads", "1"])
+    # The shorthand's own symmetry planes close its quarter's cuts: no warning.
+    quarter = run(["check", str(scenes / "axisymmetric-column.toml"), "--set", "scene.particle_spacing=0.01"], temp)
+    expect("warning" not in quarter.stderr, f"check axisymmetric-column warns: {quarter.stderr!r}")
     summary = json.loads((temp / "two-material-column" / "summary.json").read_text())
     expect(all(isinstance(summary[k], (int, float)) for k in ("runout_m", "height_m", "repose_angle_deg")),
            "the region column with [deposit] has no deposit measures")
     expect("runout " in collapsed.stdout, "the region column's console has no runout")
+
+    # A half cylinder of space: check warns of its cut plane z = 0 until a symmetry plane closes it
+    # (the example of docs/guide/writing-a-scene.md), and exits 0 either way.
+    half = """[scene]
+dimension = 3
+particle_spacing = 0.005
+smoothing_ratio = 1.3
+end_time = 0.5
+[material]
+model = "linear-elastic"
+density = 2000.0
+young_modulus = 5.0e6
+poisson_ratio = 0.3
+[[regions]]
+shape = "cylinder"
+base_centre = [0.0, 0.0, 0.0]
+radius = 0.05
+height = 0.05
+part = "half"
+"""
+    mirror = """[[boundaries]]
+shape = "rectangle"
+name = "symmetry_xy"
+kind = "symmetry"
+corner = [-0.3, 0.0, 0.0]
+edges = [[0.6, 0.0, 0.0], [0.0, 0.1, 0.0]]
+"""
+    for name, text, warned in (("open", half, True), ("mirrored", half + mirror, False)):
+        file = temp / f"half-cylinder-{name}.toml"
+        file.write_text(text)
+        checked = run(["check", str(file)], temp)
+        expect(checked.returncode == 0, f"check the {name} half cylinder: exit {checked.returncode}: {checked.stderr}")
+        warning = f"warning: {file}: [regions #1], a half cylinder, has no symmetry or free-slip wall in its cut plane z = 0 m"
+        expect((warning in checked.stderr) == warned,
+               f"check the {name} half cylinder: {'no' if warned else 'a'} warning of its cut: {checked.stderr!r}")
+        if not warned:
+            resolved = tomllib.loads(checked.stdout.split("every key resolved\n", 1)[-1])
+            expect(resolved.get("boundaries", [{}])[0].get("kind") == "symmetry",
+                   f"the {name} half cylinder's resolved scene lost its kind: {resolved.get('boundaries')!r}")
 
     # A scene of regions without [deposit]: its measures undefined, not taken from a column's frame.
     slope = run(["collapse", str(scenes / "slope.toml"), "--out", str(temp / "slope"), *QUICK], temp)

@@ -274,3 +274,86 @@ removed_at = 0.015
     CHECK(p.mass[b] == 0.0);                                            // removed at 0.015 s
   }
 }
+
+namespace {
+/// A 2 cm × 3 cm box of elastic soil against the line x = 0 of `kind`, in a free-slip floor and
+/// right wall, with `extra` keys on that line's table.
+std::string against_line(const std::string& kind, const std::string& extra = "") {
+  return R"(
+[scene]
+particle_spacing = 0.002
+smoothing_ratio = 1.3
+end_time = 0.05
+[[regions]]
+shape = "box"
+min = [0.0, 0.0]
+max = [0.02, 0.03]
+[[boundaries]]
+name = "axis"
+kind = ")" + kind + R"("
+points = [[0.0, 0.04], [0.0, 0.0]]
+)" + extra + R"(
+[[boundaries]]
+kind = "free-slip"
+points = [[0.0, 0.0], [0.02, 0.0], [0.02, 0.04]]
+)" + kElastic;
+}
+
+/// Every array of doubles of the particles, then their walls' ids and kinds.
+std::vector<std::vector<double>> arrays_of(const Particles& p) {
+  std::vector<std::vector<double>> arrays;
+  p.for_each_array([&](const char*, const std::vector<double>& a) { arrays.push_back(a); });
+  p.for_each_wall_array([&](const std::vector<double>& a) { arrays.push_back(a); });
+  arrays.emplace_back(p.wall_id.begin(), p.wall_id.end());
+  std::vector<double> kinds;
+  for (const BoundaryKind k : p.boundary_kind) kinds.push_back(static_cast<double>(static_cast<int>(k)));
+  arrays.push_back(std::move(kinds));
+  return arrays;
+}
+
+std::string refusal(const std::string& text) {
+  try {
+    (void)test::scene_from_text(text);
+  } catch (const ParameterError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST_CASE("a symmetry line is a free-slip wall: the same ghosts, named as written, kind kept", "[walls]") {
+  const Scene symmetric = test::scene_from_text(against_line("symmetry"));
+  const Scene free_slip = test::scene_from_text(against_line("free-slip"));
+  const Wall& axis = symmetric.geometry.layout.walls.front();
+  CHECK(axis.label == "axis");
+  CHECK(axis.kind == WallKind::FreeSlip);
+  CHECK(axis.symmetry_plane);
+  CHECK(!free_slip.geometry.layout.walls.front().symmetry_plane);
+  CHECK(arrays_of(build_particles(symmetric)) == arrays_of(build_particles(free_slip)));
+  // The scene as run keeps the word, and reads back to the same scene.
+  const toml::table& resolved = *symmetric.resolved["boundaries"].as_array()->front().as_table();
+  CHECK(resolved["kind"].value_or(std::string()) == "symmetry");
+  const Scene again = test::scene_from_text(scene_toml(symmetric));
+  CHECK(again.geometry.layout.walls.front().symmetry_plane);
+  CHECK(scene_toml(again) == scene_toml(symmetric));
+}
+
+TEST_CASE("a symmetry line is straight, takes no friction angle and does not move: errors name file and key",
+          "[walls]") {
+  using Catch::Matchers::Contains;
+  CHECK_THAT(refusal(against_line("symmetry", "wall_friction_angle = 20.0")),
+             Contains("case.toml") && Contains("[boundaries #1] wall_friction_angle") && Contains("symmetry"));
+  CHECK_THAT(refusal(against_line("symmetry", "removed_at = 0.1")),
+             Contains("[boundaries #1] removed_at") && Contains("symmetry plane stays"));
+  CHECK_THAT(refusal(against_line("symmetry", "velocity = [0.0, 1.0]\nend = 0.1")),
+             Contains("[boundaries #1] velocity") && Contains("symmetry plane stays"));
+  // A bent line mirrors nothing: (0, 0.04) → (0.001, 0.02) → (0, 0) is refused, straight through
+  // (0, 0.02) it is taken.
+  std::string bent = against_line("symmetry");
+  bent.replace(bent.find("[[0.0, 0.04], [0.0, 0.0]]"), 25, "[[0.0, 0.04], [0.001, 0.02], [0.0, 0.0]]");
+  CHECK_THAT(refusal(bent), Contains("[boundaries #1] points") && Contains("point 2") && Contains("straight"));
+  std::string straight = against_line("symmetry");
+  straight.replace(straight.find("[[0.0, 0.04], [0.0, 0.0]]"), 25, "[[0.0, 0.04], [0.0, 0.02], [0.0, 0.0]]");
+  CHECK(refusal(straight).empty());
+  CHECK(refusal(against_line("symmetry")).empty());
+}

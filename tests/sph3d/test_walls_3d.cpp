@@ -191,6 +191,60 @@ TEST_CASE("every refusal of a 3D [[boundaries]] table names the file, the table,
       Contains("corner"));
 }
 
+namespace {
+/// Every array of doubles of the particles, then the ids of their walls and their kinds.
+std::vector<std::vector<double>> arrays_of(const ParticlesOf<3>& p) {
+  std::vector<std::vector<double>> arrays;
+  p.for_each_array([&](const char*, const std::vector<double>& a) { arrays.push_back(a); });
+  p.for_each_wall_array([&](const std::vector<double>& a) { arrays.push_back(a); });
+  arrays.emplace_back(p.wall_id.begin(), p.wall_id.end());
+  std::vector<double> kinds;
+  for (const BoundaryKind k : p.boundary_kind) kinds.push_back(static_cast<double>(static_cast<int>(k)));
+  arrays.push_back(std::move(kinds));
+  return arrays;
+}
+}  // namespace
+
+TEST_CASE("a symmetry plane of space is a free-slip plane: the same ghosts, named as written, kind kept",
+          "[walls-3d]") {
+  // The plate of kPlate at the slab's released side, written as a symmetry plane: the soil mirrored
+  // across x = −Δp/2, as a free-slip plane mirrors it (stages/boundaries.h, μ = 0).
+  std::string mirror = kPlate;
+  mirror.replace(mirror.find("free-slip"), 9, "symmetry");
+  const Scene3 free_slip = parse_scene_3d(small_slab("", kPlate), "walls.toml");
+  const Scene3 symmetric = parse_scene_3d(small_slab("", mirror), "walls.toml");
+  const Wall3& plate = symmetric.geometry.walls[wall_named(symmetric, "plate")];
+  CHECK(plate.kind == WallKind::FreeSlip);
+  CHECK(plate.friction_angle == 0.0);
+  CHECK(!plate.motion.changes());
+  // Every array of the particles, ghosts and their walls' data alike, bit for bit.
+  CHECK(arrays_of(build_particles_3d(symmetric)) == arrays_of(build_particles_3d(free_slip)));
+  // The scene as run says "symmetry", under the plate's name, and reads back to it.
+  const toml::table& resolved = *symmetric.resolved["boundaries"].as_array()->front().as_table();
+  CHECK(resolved["kind"].value_or(std::string()) == "symmetry");
+  CHECK(resolved["name"].value_or(std::string()) == "plate");
+  CHECK(!resolved.contains("wall_friction_angle"));
+  const Scene3 again = parse_scene_3d(scene_toml(symmetric), "again.toml");
+  CHECK(scene_toml(again) == scene_toml(symmetric));
+  CHECK(again.geometry.walls[wall_named(again, "plate")].kind == WallKind::FreeSlip);
+}
+
+TEST_CASE("a symmetry plane of space takes no friction angle and does not move: errors name file and key",
+          "[walls-3d]") {
+  using Catch::Matchers::Contains;
+  const std::string symmetry =
+      "[[boundaries]]\nshape = \"rectangle\"\nkind = \"symmetry\"\ncorner = [0.0, 0.0, 0.0]\n"
+      "edges = [[0.0, 0.01, 0.0], [0.0, 0.0, 0.01]]\n";
+  CHECK_THAT(refusal(small_slab("", symmetry + "wall_friction_angle = 30.0\n")),
+             Contains("walls.toml") && Contains("[boundaries #1] wall_friction_angle") &&
+                 Contains("kind = \"symmetry\"") && Contains("frictional"));
+  for (const std::string key : {"velocity = [0.0, 1.0, 0.0]\nend = 1.0\n", "removed_at = 0.5\n", "end = 1.0\n"})
+    CHECK_THAT(refusal(small_slab("", symmetry + key)),
+               Contains("walls.toml") && Contains("[boundaries #1] ") && Contains(key.substr(0, key.find(' '))) &&
+                   Contains("symmetry plane stays"));
+  CHECK(refusal(small_slab("", symmetry)).empty());
+}
+
 TEST_CASE(
     "a moving wall of space carries its ghosts by v dt each step over its interval; removed, no soil feels "
     "it",

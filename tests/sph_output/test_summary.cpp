@@ -121,3 +121,15 @@ TEST_CASE("summary.json records completion, provenance and the inputs as a neste
   CHECK(summary_json(s).find("\"complete\": true") != std::string::npos);
   CHECK(summary_json(s).find("\"resumed_from\": 0.25") != std::string::npos);
 }
+
+TEST_CASE("summary.json names each wall's kind, a symmetry line as \"symmetry\"", "[summary]") {
+  Summary s = example();
+  Wall axis{.points = {{0.0, 0.04}, {0.0, 0.0}}, .kind = WallKind::FreeSlip, .label = "axis", .symmetry_plane = true};
+  Wall side{.points = {{0.02, 0.0}, {0.02, 0.04}}, .kind = WallKind::FreeSlip, .label = "side"};
+  Wall floor{.points = {{0.0, 0.0}, {0.02, 0.0}}, .kind = WallKind::NoSlip, .label = "floor"};
+  s.boundaries = {axis, side, floor};
+  const std::string json = summary_json(s);
+  CHECK(json.find(R"({"name": "axis", "kind": "symmetry", )") != std::string::npos);
+  CHECK(json.find(R"({"name": "side", "kind": "free-slip", )") != std::string::npos);
+  CHECK(json.find(R"({"name": "floor", "kind": "no-slip", )") != std::string::npos);
+}
