@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/material_toml.h"
 #include "sph/collapse_3d.h"
 #include "sph/diagnostics.h"
 #include "sph/gravity_loading.h"
@@ -38,15 +39,7 @@ wall_withdrawal = "instant"
 floor_length = 0.028
 [initial]
 stress = "gravity-loading"
-[material]
-model = "drucker-prager"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-friction_angle = 35.0
-cohesion = 0.0
-dilatancy_angle = 0.0
-)";
+)" + fixtures::kDruckerPragerToml;
 
 constexpr double kRho = 2000.0, kG = 9.81, kSpacing = 0.004, kH = 0.032, kW = 0.024;
 
