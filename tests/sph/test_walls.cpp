@@ -284,6 +284,7 @@ std::string against_line(const std::string& kind, const std::string& extra = "")
 particle_spacing = 0.002
 smoothing_ratio = 1.3
 end_time = 0.05
+gravity = 9.81
 [[regions]]
 shape = "box"
 min = [0.0, 0.0]
