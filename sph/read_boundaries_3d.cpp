@@ -137,8 +137,8 @@ toml::array read_boundaries_3d(const toml::table& root, const std::string& sourc
     names.push_back(wall.label);
     r.insert("name", wall.label);
     t.reject_unknown_keys();
-    (wall.motion.removed_at > 0.0 ? walls : withdrawn)
-        .push_back(std::move(wall));  // removed at 0: never there
+    // Removed at 0: not there in the run, only in a gravity loading before it.
+    (wall.motion.removed_at > 0.0 ? walls : withdrawn).push_back(std::move(wall));
     resolved.push_back(std::move(r));
   }
   return resolved;

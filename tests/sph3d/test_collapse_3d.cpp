@@ -16,9 +16,6 @@ using namespace soilsph::sph;
 namespace {
 const std::string kSlab = std::string(SOILSPH_SOURCE_DIR) + "/data/scenes/slab-3d.toml";
 const std::string kColumn2d = std::string(SOILSPH_SOURCE_DIR) + "/data/scenes/collapse-dp.toml";
-}  // namespace
-
-namespace {
 
 /// How far a slab's deposit may lie from the plane's: the runouts and the height relative, the
 /// repose angle in degrees.
