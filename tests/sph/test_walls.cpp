@@ -10,6 +10,7 @@
 
 #include "helpers.h"
 #include "../common/material_toml.h"
+#include "../common/particle_arrays.h"
 #include "sph/diagnostics.h"
 #include "sph/solver.h"
 
@@ -300,18 +301,6 @@ points = [[0.0, 0.0], [0.02, 0.0], [0.02, 0.04]]
 )" + kElastic;
 }
 
-/// Every array of doubles of the particles, then their walls' ids and kinds.
-std::vector<std::vector<double>> arrays_of(const Particles& p) {
-  std::vector<std::vector<double>> arrays;
-  p.for_each_array([&](const char*, const std::vector<double>& a) { arrays.push_back(a); });
-  p.for_each_wall_array([&](const std::vector<double>& a) { arrays.push_back(a); });
-  arrays.emplace_back(p.wall_id.begin(), p.wall_id.end());
-  std::vector<double> kinds;
-  for (const BoundaryKind k : p.boundary_kind) kinds.push_back(static_cast<double>(static_cast<int>(k)));
-  arrays.push_back(std::move(kinds));
-  return arrays;
-}
-
 std::string refusal(const std::string& text) {
   try {
     (void)test::scene_from_text(text);
@@ -330,7 +319,7 @@ TEST_CASE("a symmetry line is a free-slip wall: the same ghosts, named as writte
   CHECK(axis.kind == WallKind::FreeSlip);
   CHECK(axis.symmetry_plane);
   CHECK(!free_slip.geometry.layout.walls.front().symmetry_plane);
-  CHECK(arrays_of(build_particles(symmetric)) == arrays_of(build_particles(free_slip)));
+  CHECK(test::arrays_of(build_particles(symmetric)) == test::arrays_of(build_particles(free_slip)));
   // The scene as run keeps the word, and reads back to the same scene.
   const toml::table& resolved = *symmetric.resolved["boundaries"].as_array()->front().as_table();
   CHECK(resolved["kind"].value_or(std::string()) == "symmetry");

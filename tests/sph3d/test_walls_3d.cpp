@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../common/material_toml.h"
+#include "../common/particle_arrays.h"
 #include "sph/analysis/boundary_forces.h"
 #include "sph/collapse_3d.h"
 #include "sph/geometry/extrusion.h"
@@ -191,20 +192,6 @@ TEST_CASE("every refusal of a 3D [[boundaries]] table names the file, the table,
       Contains("corner"));
 }
 
-namespace {
-/// Every array of doubles of the particles, then the ids of their walls and their kinds.
-std::vector<std::vector<double>> arrays_of(const ParticlesOf<3>& p) {
-  std::vector<std::vector<double>> arrays;
-  p.for_each_array([&](const char*, const std::vector<double>& a) { arrays.push_back(a); });
-  p.for_each_wall_array([&](const std::vector<double>& a) { arrays.push_back(a); });
-  arrays.emplace_back(p.wall_id.begin(), p.wall_id.end());
-  std::vector<double> kinds;
-  for (const BoundaryKind k : p.boundary_kind) kinds.push_back(static_cast<double>(static_cast<int>(k)));
-  arrays.push_back(std::move(kinds));
-  return arrays;
-}
-}  // namespace
-
 TEST_CASE("a symmetry plane of space is a free-slip plane: the same ghosts, named as written, kind kept",
           "[walls-3d]") {
   // The plate of kPlate at the slab's released side, written as a symmetry plane: the soil mirrored
@@ -218,7 +205,7 @@ TEST_CASE("a symmetry plane of space is a free-slip plane: the same ghosts, name
   CHECK(plate.friction_angle == 0.0);
   CHECK(!plate.motion.changes());
   // Every array of the particles, ghosts and their walls' data alike, bit for bit.
-  CHECK(arrays_of(build_particles_3d(symmetric)) == arrays_of(build_particles_3d(free_slip)));
+  CHECK(test::arrays_of(build_particles_3d(symmetric)) == test::arrays_of(build_particles_3d(free_slip)));
   // The scene as run says "symmetry", under the plate's name, and reads back to it.
   const toml::table& resolved = *symmetric.resolved["boundaries"].as_array()->front().as_table();
   CHECK(resolved["kind"].value_or(std::string()) == "symmetry");
