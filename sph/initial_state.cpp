@@ -144,15 +144,20 @@ Particles build_particles(const Scene& scene) {
 
 template <int dim>
 void copy_wall_attributes(ParticlesOf<dim>& to, const ParticlesOf<dim>& from) {
-  if (to.soil_count != from.soil_count || to.boundary_count() != from.boundary_count())
+  // The checkpoint's boundary is the scene's lattice ghosts, then the soil's mirror images of its
+  // last search, if it has symmetry planes; the time loop rebuilds the images' own (solver.h).
+  if (to.soil_count != from.soil_count || to.boundary_count() < from.boundary_count())
     throw ParameterError("the checkpoint's particles (" + std::to_string(to.soil_count) + " soil, " +
                          std::to_string(to.boundary_count()) + " boundary) are not the scene's (" +
                          std::to_string(from.soil_count) + ", " + std::to_string(from.boundary_count()) + ")");
-  to.wall_nx = from.wall_nx, to.wall_ny = from.wall_ny, to.wall_friction = from.wall_friction;
-  to.wall_stick = from.wall_stick, to.wall_id = from.wall_id;
-  if constexpr (dim == 3)
-    to.wall_nz = from.wall_nz, to.image_sign_x = from.image_sign_x,
-    to.image_sign_y = from.image_sign_y, to.image_sign_z = from.image_sign_z;
+  to.image_begin = from.size();
+  const auto copy = [](const auto& a, auto& b) { std::copy(a.begin(), a.end(), b.begin()); };
+  copy(from.wall_nx, to.wall_nx), copy(from.wall_ny, to.wall_ny), copy(from.wall_friction, to.wall_friction);
+  copy(from.wall_stick, to.wall_stick), copy(from.wall_id, to.wall_id);
+  if constexpr (dim == 3) {
+    copy(from.wall_nz, to.wall_nz), copy(from.image_sign_x, to.image_sign_x);
+    copy(from.image_sign_y, to.image_sign_y), copy(from.image_sign_z, to.image_sign_z);
+  }
 }
 template void copy_wall_attributes<2>(ParticlesOf<2>&, const ParticlesOf<2>&);
 template void copy_wall_attributes<3>(ParticlesOf<3>&, const ParticlesOf<3>&);

@@ -23,9 +23,10 @@ double friction_coefficient(const Wall3& wall) {
 
 /// The image signs of ghost b (ThirdAxisArrays<3>::image_sign_x): the product of the reflections
 /// across every free-slip wall other than its own that it also lies behind, within the ghost layers
-/// (a corner of two symmetry planes, the floor's edge below one, the floor's corner below both).
-/// Such a plane must be normal to an axis, so that the reflections commute and their product is a
-/// sign per axis; the shorthands' symmetry planes are. Throws ParameterError for another. A wall
+/// (the floor's edge below a free-slip side wall, its corner below two). Such a wall must be normal
+/// to an axis, so that the reflections commute and their product is a sign per axis. Throws
+/// ParameterError for another. A symmetry plane counts for none: the ghost's row holds the soil's
+/// mirror images behind it (stages/mirror_images.h), so its average is the mirror already. A wall
 /// that moves or goes images no ghost: its plane leaves the ghosts behind it. A moving wall's ghost
 /// keeps its images only while it moves parallel to the planes that image it: another motion is an
 /// error.
@@ -36,13 +37,14 @@ Vec3 image_signs(const Geometry3& g, const GhostPoint3& b, const std::string& so
   double sign[3] = {1.0, 1.0, 1.0};
   for (std::size_t w = 0; w < g.walls.size(); ++w) {
     const Wall3& wall = g.walls[w];
-    if (static_cast<int>(w) == b.wall || wall.kind != WallKind::FreeSlip || wall.motion.changes()) continue;
+    // A symmetry plane's mirror is in the ghost's row already: the soil's images (mirror_images.h).
+    if (static_cast<int>(w) == b.wall || wall.kind != WallKind::FreeSlip || wall.motion.changes() ||
+        wall.symmetry_plane)
+      continue;
     const double height = wall.plane.height_above(b.position);
     if (!(height < -1e-9 * g.particle_spacing && height > -depth)) continue;
-    const Vec3 n = wall.plane.inward;
-    const double c[3] = {std::abs(n.x), std::abs(n.y), std::abs(n.z)};
-    const int axis = static_cast<int>(std::max_element(c, c + 3) - c);
-    if (!(c[axis] > 1.0 - 1e-12))
+    const int axis = axis_along(wall.plane.inward);
+    if (axis < 0)
       throw ParameterError(source + ": the free-slip wall \"" + wall.label +
                            "\" meets another wall's ghosts but is not normal to an axis (a corner of two such "
                            "planes is mirrored only where each is normal to x, y or z)");
@@ -136,8 +138,9 @@ ParticlesOf<3> build_particles_3d(const Scene3& scene) {
     for (std::size_t w = 0; w < g.walls.size(); ++w)
       if (g.walls[w].motion.changes() == changes) claiming.push_back(w);
   std::vector<PlanarWall> planes;
-  for (const std::size_t w : claiming) planes.push_back(g.walls[w].plane);
-  std::vector<GhostPoint3> ghosts = planar_ghost_points(planes, g.lattice, g.boundary_layers);
+  std::vector<bool> mirrored;
+  for (const std::size_t w : claiming) planes.push_back(g.walls[w].plane), mirrored.push_back(g.walls[w].symmetry_plane);
+  std::vector<GhostPoint3> ghosts = planar_ghost_points(planes, g.lattice, g.boundary_layers, mirrored);
   for (GhostPoint3& b : ghosts) b.wall = static_cast<int>(claiming[static_cast<std::size_t>(b.wall)]);
 
   double lowest = std::numeric_limits<double>::infinity();  // the bottom of the lowest particle's cell

@@ -75,11 +75,12 @@ struct ThirdAxisArrays<3> {
   std::vector<double> lxz, lyz, lzx, lzy, lzz;  ///< soil: velocity gradient ∂v^α/∂x^β (1/s)
   std::vector<double> z0;               ///< soil: position at t = 0 (m)
   std::vector<double> wall_nz, wall_vz;  ///< boundary: wall normal and velocity
-  /// Boundary: ±1 per axis, the image across the further free-slip planes the ghost also lies
-  /// behind besides its own wall (where two symmetry planes meet, where the floor meets one, and
-  /// where the floor meets both): each such plane is normal to an axis (initial_state_3d.cpp), and
-  /// its reflection flips that axis's component, so their product is a sign per axis; 1 where there
-  /// is none. A vector's component a is multiplied by image_sign[a], a tensor's (a, b) by both.
+  /// Boundary: ±1 per axis. A ghost's image across the further free-slip walls it also lies behind
+  /// besides its own (the floor's edge below a free-slip side wall; not a symmetry plane, whose
+  /// images its row holds): each such wall is normal to an axis (initial_state_3d.cpp), and its
+  /// reflection flips that axis's component, so their product is a sign per axis; 1 where there is
+  /// none. A mirror image's (stages/mirror_images.h): the reflection it carries. A vector's
+  /// component a is multiplied by image_sign[a], a tensor's (a, b) by both.
   std::vector<double> image_sign_x, image_sign_y, image_sign_z;
 };
 
@@ -90,6 +91,10 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
   using Source = MomentumSourceOf<dim>;
 
   std::size_t soil_count = 0;  ///< soil particles are the first soil_count entries
+  /// The boundary particles [soil_count, image_begin) are ghosts on the lattice behind the walls,
+  /// fixed in number; [image_begin, size()) the soil's mirror images behind symmetry planes, rebuilt
+  /// at each neighbour search (stages/mirror_images.h).
+  std::size_t image_begin = 0;
 
   // Every particle (soil then boundary).
   std::vector<double> x, y;           ///< position (m)
@@ -124,6 +129,7 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
 
   std::size_t size() const { return x.size(); }
   std::size_t boundary_count() const { return size() - soil_count; }
+  std::size_t image_count() const { return size() - image_begin; }
   bool is_soil(std::size_t i) const { return i < soil_count; }
 
   /// The coordinate arrays (x, y[, z]), for the neighbour search.
@@ -210,6 +216,21 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
     if constexpr (dim == 3)  // no further plane behind a ghost until its builder finds one
       for (auto* sign : {&this->image_sign_x, &this->image_sign_y, &this->image_sign_z}) sign->assign(boundary, 1.0);
     wall_id.assign(boundary, 0);
+    image_begin = soil + boundary;
+  }
+
+  /// Resizes the boundary to `boundary` particles, keeping the soil and the first boundary
+  /// particles as they are (new entries zero); image_begin stays.
+  void resize_boundary(std::size_t boundary) {
+    const std::size_t n = soil_count + boundary;
+    std::size_t k = 0;
+    for_each_array([&](const char*, std::vector<double>& a) {
+      if (k++ < kParticleArrays) a.resize(n, 0.0);
+    });
+    momentum_source.resize(n, Source{});
+    boundary_kind.resize(boundary, BoundaryKind::FreeSlip);
+    for_each_wall_array([&](std::vector<double>& a) { a.resize(boundary, 0.0); });
+    wall_id.resize(boundary, 0);
   }
 
  private:

@@ -125,7 +125,10 @@ toml::array read_boundaries_3d(const toml::table& root, const std::string& sourc
     Wall3 wall;
     wall.plane = shape == "rectangle" ? read_rectangle(t, *table, r) : read_polygon(t, *table, r);
     const WallKindRead kind = read_wall_kind(t, r);
-    wall.kind = kind.kind, wall.friction_angle = kind.friction_angle;
+    wall.kind = kind.kind, wall.friction_angle = kind.friction_angle, wall.symmetry_plane = kind.symmetry_plane;
+    if (wall.symmetry_plane && axis_along(wall.plane.inward) < 0)
+      t.fail("kind", "= \"symmetry\" needs a plane normal to x, y or z (its ghosts are the soil's images, "
+                     "reflected along one axis); this one's normal is not: take kind = \"free-slip\"");
     wall.motion = read_motion(t, *table, r);
     wall.label = t.has("name") ? t.word("name") : "boundary_" + std::to_string(k);
     if (std::find(names.begin(), names.end(), wall.label) != names.end())

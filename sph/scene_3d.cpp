@@ -70,8 +70,16 @@ Wall3 wall(Vec3 corner, Vec3 a, Vec3 b, WallKind kind, const std::string& label,
   return {.plane = rectangle_wall(corner, a, b, source + ": the " + label),
           .kind = kind,
           .friction_angle = 0.0,
+          .symmetry_plane = false,
           .label = label,
           .motion = {}};
+}
+
+/// A symmetry plane of the shorthands: a free-slip rectangle mirrored by the soil's images.
+Wall3 symmetry_plane(Vec3 corner, Vec3 a, Vec3 b, const std::string& label, const std::string& source) {
+  Wall3 plane = wall(corner, a, b, WallKind::FreeSlip, label, source);
+  plane.symmetry_plane = true;
+  return plane;
 }
 
 }  // namespace
@@ -136,11 +144,9 @@ void read_axisymmetric_column(const TableReader& t, const std::string& source, G
   g.walls.push_back(
       wall({x_lo, y, z_lo}, {0.0, 0.0, R - z_lo}, {R - x_lo, 0.0, 0.0}, WallKind::NoSlip, "floor", source));
   if (g.symmetry == ColumnSymmetry::Quarter)
-    g.walls.push_back(wall({0.0, y, z_lo}, {0.0, top - y, 0.0}, {0.0, 0.0, R - z_lo}, WallKind::FreeSlip,
-                           "symmetry_x", source));
+    g.walls.push_back(symmetry_plane({0.0, y, z_lo}, {0.0, top - y, 0.0}, {0.0, 0.0, R - z_lo}, "symmetry_x", source));
   if (g.symmetry != ColumnSymmetry::None)
-    g.walls.push_back(wall({x_lo, y, 0.0}, {R - x_lo, 0.0, 0.0}, {0.0, top - y, 0.0}, WallKind::FreeSlip,
-                           "symmetry_z", source));
+    g.walls.push_back(symmetry_plane({x_lo, y, 0.0}, {R - x_lo, 0.0, 0.0}, {0.0, top - y, 0.0}, "symmetry_z", source));
   g.domain = domain_around(g, x_lo, R, z_lo, R, top);
 }
 
@@ -189,10 +195,8 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
     g.walls.back().motion = {
         .removed_at = clear, .velocity = {0.0, g.lift_speed, 0.0}, .start = 0.0, .end = clear};
   }
-  g.walls.push_back(
-      wall({x_lo, y, 0.0}, {along, 0.0, 0.0}, {0.0, up, 0.0}, WallKind::FreeSlip, "symmetry_z", source));
-  g.walls.push_back(
-      wall({x_lo, y, T}, {0.0, up, 0.0}, {along, 0.0, 0.0}, WallKind::FreeSlip, "symmetry_far", source));
+  g.walls.push_back(symmetry_plane({x_lo, y, 0.0}, {along, 0.0, 0.0}, {0.0, up, 0.0}, "symmetry_z", source));
+  g.walls.push_back(symmetry_plane({x_lo, y, T}, {0.0, up, 0.0}, {along, 0.0, 0.0}, "symmetry_far", source));
   g.domain = domain_around(g, x_lo, x_wall, 0.0, T, top);
 }
 

@@ -36,6 +36,9 @@ struct Wall3 {
   PlanarWall plane;
   WallKind kind = WallKind::FreeSlip;
   double friction_angle = 0.0;  ///< degrees, Frictional only
+  /// kind = "symmetry" (free slip, still, normal to an axis): its ghosts are the soil's mirror
+  /// images (stages/mirror_images.h), not lattice ghosts
+  bool symmetry_plane = false;
   /// "floor", "symmetry_x", "symmetry_z", "symmetry_far", "fixed_wall", "removable_wall"; a
   /// [[boundaries]] name ("boundary_K" by default)
   std::string label;

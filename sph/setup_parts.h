@@ -4,6 +4,7 @@
 /// alike from a scene: the initial sound speeds of its materials, the momentum equation's
 /// parameters, and the setup itself from what each dimension's geometry adds (GeometryParts).
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "constitutive/material.h"
@@ -52,6 +53,15 @@ MomentumParamsOf<dim> momentum_params(const Numerics& numerics, const CubicSplin
   return momentum;
 }
 
+/// How far from a symmetry plane the soil has mirror images (stages/mirror_images.h): the search
+/// radius 2h + s, the images every soil row needs, plus the diagonal of the ghost layers' corner
+/// block (√3 × their depth), so that a ghost behind the plane, which takes the images into its
+/// kernel average as the soil they stand for, has every one within its search radius too.
+template <int dim>
+double image_reach(const CubicSplineKernel<dim>& kernel, double ghost_depth) {
+  return (2.0 + PairList<dim>::kSkinRatio) * kernel.smoothing_length() + std::sqrt(3.0) * ghost_depth;
+}
+
 /// What a scene's geometry gives a solver setup, which each dimension derives its own way.
 template <int dim>
 struct GeometryParts {
@@ -59,6 +69,8 @@ struct GeometryParts {
   WallMotionsOf<dim> walls;
   double potential_datum;  ///< height of the lowest wall along −g (m)
   DomainOf<dim> domain;
+  std::vector<SymmetryPlane> symmetry_planes = {};  ///< mirrored by the soil's images
+  double boundary_layers = 0.0;  ///< the depth of the ghost layers in spacings, for the images' reach
 };
 
 /// The solver setup of a scene of either dimension (Scene or Scene3): the kernel, the time step and
@@ -83,7 +95,9 @@ SolverSetupOf<dim> solver_setup(const Scene& scene, GeometryParts<dim> parts) {
           .domain = parts.domain,
           .checkpoint_interval = scene.output.checkpoint_interval,
           .constant_stiffness_sound_speed = c.constant_stiffness,
-          .ghost_body_force = scene.numerics.ghost_body_force ? g.gravity : Vec<dim>{}};
+          .ghost_body_force = scene.numerics.ghost_body_force ? g.gravity : Vec<dim>{},
+          .symmetry_planes = std::move(parts.symmetry_planes),
+          .image_reach = image_reach(kernel, parts.boundary_layers * g.particle_spacing)};
 }
 
 }  // namespace soilsph::sph

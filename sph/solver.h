@@ -28,6 +28,7 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -43,6 +44,7 @@
 #include "sph/stages/boundaries.h"
 #include "sph/stages/continuity.h"
 #include "sph/stages/leapfrog.h"
+#include "sph/stages/mirror_images.h"
 #include "sph/stages/momentum.h"
 #include "sph/stages/plane_guard.h"
 #include "sph/stages/stress_update.h"
@@ -88,6 +90,8 @@ struct SolverSetupOf {
   double checkpoint_interval = 0.0;  ///< s of simulated time between checkpoints (0: none at intervals)
   double constant_stiffness_sound_speed = 0.0;  ///< the largest c of the materials of constant stiffness
   Vec<dim> ghost_body_force{};  ///< body force per mass the ghosts' normal stress balances (m/s²; 0: none)
+  std::vector<SymmetryPlane> symmetry_planes;  ///< mirrored by the soil's images (stages/mirror_images.h)
+  double image_reach = 0.0;  ///< how far from a symmetry plane the soil has images (m; mirror_images.h)
 
   /// Δt of the soil at rest with the initial sound speed: the largest step the run takes while c
   /// does not fall.
@@ -141,6 +145,13 @@ struct NextStateOf {
     const auto v = velocities(p);
     for (int a = 0; a < dim; ++a) velocity[a].assign(v[a].begin(), v[a].end());
     if constexpr (dim == 3) position = {p.x, p.y, p.z};
+  }
+  /// Room for n particles (the soil's mirror images change in number; their entries are written
+  /// before they are read).
+  void resize(std::size_t n) {
+    for (auto& a : velocity) a.resize(n);
+    density.resize(n);
+    for (auto& a : position) a.resize(n);
   }
   /// v^{n+½} as spans, for the stages that read or write it.
   std::array<std::span<double>, dim> velocity_spans() {
@@ -210,9 +221,13 @@ struct WorkspaceOf {
   StepHealth health;         ///< loop 4, the search, the sample and the close report to it
   SamplingOf<dim> sampling;  ///< between loops 2 and 3 of a step that samples
   LoopBalancers balance;     ///< cut loops 1, 2 and 4 between the threads
+  MirrorImagesOf<dim> images;  ///< the soil's images behind the symmetry planes, rebuilt with the pairs
 
   WorkspaceOf(const SolverSetupOf<dim>& setup, const ParticlesOf<dim>& p)
-      : sound_speed(setup.sound_speed), pairs(p.size()), next(p) {
+      : sound_speed(setup.sound_speed),
+        pairs(p.size()),
+        next(p),
+        images(setup.symmetry_planes, setup.image_reach) {
     // Cells on a grid fixed for the run (neighbours/cell_list.h), so a row depends on positions
     // alone, as a domain decomposition needs; the plane keeps the bounding box's grid, which its
     // shipped results were made with.
@@ -220,6 +235,15 @@ struct WorkspaceOf {
   }
 };
 using Workspace = WorkspaceOf<2>;
+
+/// Rebuilds the soil's mirror images from the soil at `soil` (the positions of the search about
+/// to be made, or of the one a checkpoint saved) and sizes the workspace for them (serial).
+template <int dim>
+void rebuild_images(ParticlesOf<dim>& p, WorkspaceOf<dim>& work, const std::type_identity_t<Coordinates<dim>>& soil) {
+  work.images.rebuild(p, soil);
+  work.pairs.volume.resize(p.size());
+  work.next.resize(p.size());
+}
 
 namespace detail {
 /// Calls f(model, fallback, begin, end) for every group, with its model's own type.
@@ -322,6 +346,7 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
     std::swap(p.x, next.position[0]), std::swap(p.y, next.position[1]), std::swap(p.z, next.position[2]);
   }
   setup.walls.advance(p, work.time, dt);
+  work.images.place(p);
   work.time += dt;
   const std::size_t pushed = setup.guard.apply(p, work.time);
   work.health.guard_corrections += pushed;
@@ -359,7 +384,6 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
   PairList<dim>& nl = pairs.neighbours;
   NextStateOf<dim>& next = work.next;
   StepHealth& health = work.health;
-  const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count);
   const auto& m = setup.momentum;
   const double kick_dt = kick_interval(work.previous_dt, dt);
   // body(i) for i in [begin, end): this thread's part by `balance`, timed in its CPU time (wall
@@ -378,31 +402,52 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
     balance.record(thread, thread_cpu_seconds() - start);
   };
   if (pairs.search_next) {
+    if (work.images.any()) {
+#pragma omp single
+      rebuild_images(p, work, p.coordinates());
+    }
     try {
-      nl.search(p.coordinates(), setup.kernel, p.soil_count, p.id);  // every thread throws alike, or none
+      nl.search(p.coordinates(), setup.kernel, p.soil_count, p.id, p.image_begin);  // every thread throws alike, or none
     } catch (...) {
 #pragma omp critical(soilsph_search_failure)
       if (!health.error) health.error = std::current_exception();
     }
   }
+  // After the search, which may change the number of mirror images.
+  const auto all = static_cast<std::ptrdiff_t>(p.size()), soil = static_cast<std::ptrdiff_t>(p.soil_count),
+             lattice_end = static_cast<std::ptrdiff_t>(p.image_begin);
   if (!health.error) {
     // 1. Pairs at x^n; ghosts take σ^n, ρ^n from the soil (their v^{n−½} came with the last step);
     //    the artificial stress from σ^n, then what the pairs of the momentum equation read (σ/ρ², v, ρ,
     //    m packed per particle), soil and ghosts. The soil rows and the ghost rows are shared out
     //    apart, so that every thread fills the soil rows it reads again in loops 2 and 4 (a soil
     //    row costs several ghost rows) and no thread waits between the two halves (nowait: the
-    //    ghosts read only what the soil rows do not write).
-    const auto prepare = [&](std::size_t i) {
-      nl.fill_row(i, p.coordinates(), setup.kernel);
-      if (!p.is_soil(i)) mirror_stress_onto_ghost(p, nl, i, setup.ghost_body_force);
+    //    ghosts read only what the soil rows do not write). The soil's mirror images copy their soil
+    //    particles, before the ghosts, whose rows read them.
+    const auto prepare_sources = [&](std::size_t i) {
       pairs.volume[i] = particle_volume(p, i);
       if (m.artificial_stress.enabled() && set_artificial_stress(p, i, m.artificial_stress.epsilon()))
         pairs.any_tension.store(true, std::memory_order_relaxed);
       set_momentum_source(p, i);
     };
-    balanced(work.balance.prepare, 0, p.soil_count, prepare);
+    balanced(work.balance.prepare, 0, p.soil_count, [&](std::size_t i) {
+      nl.fill_row(i, p.coordinates(), setup.kernel);
+      prepare_sources(i);
+    });
+    if (lattice_end < all) {
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t s = soil; s < all; ++s) prepare(static_cast<std::size_t>(s));
+      for (std::ptrdiff_t s = lattice_end; s < all; ++s) {
+        work.images.copy_stress(p, static_cast<std::size_t>(s));
+        prepare_sources(static_cast<std::size_t>(s));
+      }
+    }
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = soil; s < lattice_end; ++s) {
+      const auto b = static_cast<std::size_t>(s);
+      nl.fill_row(b, p.coordinates(), setup.kernel);
+      mirror_stress_onto_ghost(p, nl, b, setup.ghost_body_force);
+      prepare_sources(b);
+    }
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
     //    Each particle's own ρ and σ, whatever its material: no interface model (docs/reference/scenes.md).
     const bool any_tension = pairs.any_tension.load(std::memory_order_relaxed);  // after loop 1's barrier
@@ -425,9 +470,14 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
         health.error = std::current_exception();
       }
     }
-    // 3. Ghosts take v^{n+½}.
+    // 3. Ghosts take v^{n+½}: the soil's images first, which the ghosts' rows read.
+    if (lattice_end < all) {
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t s = soil; s < all; ++s)
+      for (std::ptrdiff_t s = lattice_end; s < all; ++s)
+        work.images.copy_velocity(p, static_cast<std::size_t>(s), next.velocity_spans());
+    }
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = soil; s < lattice_end; ++s)
       mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), next.velocity_spans());
     // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
     //    stage of this loop reads σ of a neighbour, nor x in the plane, whose pairs hold x_i − x_j; in
@@ -651,7 +701,14 @@ class TimeLoop {
     work_.time = state.stats.end_time;
     setup_.walls.set_velocities(p_, work_.time);
     work_.health.failure.restore_fallback_updates(stats_.fallback_stress_updates);
-    work_.pairs.neighbours.search(searched_positions<dim>(state), setup_.kernel, p_.soil_count, p_.id);
+    // The images of the search the checkpoint saved, from the soil's positions there, placed where
+    // the soil is now: what the run that saved it held.
+    const std::size_t saved = state.search_x.size();
+    if (work_.images.any()) rebuild_images(p_, work_, searched_positions<dim>(state));
+    if (p_.size() != saved || (!work_.images.any() && p_.image_count() != 0))
+      throw std::runtime_error("the checkpoint holds " + std::to_string(saved) + " particles, the scene's soil, ghosts and mirror images " +
+                               std::to_string(p_.size()) + ": it was not written by this scene");
+    work_.pairs.neighbours.search(searched_positions<dim>(state), setup_.kernel, p_.soil_count, p_.id, p_.image_begin);
     work_.pairs.search_next = work_.pairs.neighbours.search_needed(p_.coordinates());
   }
 

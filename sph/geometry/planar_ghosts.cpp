@@ -61,11 +61,12 @@ std::vector<Vec2> grown_outline(std::span<const PlanarWall> walls, std::size_t w
 }
 
 std::vector<GhostPoint3> planar_ghost_points(std::span<const PlanarWall> walls, const Lattice3& lattice,
-                                             int layers) {
+                                             int layers, const std::vector<bool>& mirrored) {
   const double dx = lattice.spacing, depth = layers * dx, tolerance = 1e-9 * dx;
   std::vector<GhostPoint3> ghosts;
   std::set<std::array<long long, 3>> taken;
   for (std::size_t w = 0; w < walls.size(); ++w) {
+    if (!mirrored.empty() && mirrored[w]) continue;
     const PlanarWall& wall = walls[w];
     const std::vector<Vec2> outline = grown_outline(walls, w, depth);
     // The box of the slab behind the grown outline.

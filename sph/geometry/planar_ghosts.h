@@ -30,7 +30,10 @@ std::vector<Vec2> grown_outline(std::span<const PlanarWall> walls, std::size_t w
 /// (grown_outline), wall by wall, each in k, j, i order. A node behind two or three walls (an edge
 /// or a corner block) is kept once, for the first wall that claims it, so no two ghosts coincide;
 /// at an outer corner the two walls' ghost slabs overlap in the wedge behind it and cover it.
+/// Walls marked in `mirrored` (symmetry planes, whose ghosts are the soil's mirror images,
+/// stages/mirror_images.h) get none, but still grow the outlines of the walls they meet, so that
+/// the floor's ghosts reach on under a symmetry plane; none marked if it is empty.
 std::vector<GhostPoint3> planar_ghost_points(std::span<const PlanarWall> walls, const Lattice3& lattice,
-                                             int layers);
+                                             int layers, const std::vector<bool>& mirrored = {});
 
 }  // namespace soilsph::sph

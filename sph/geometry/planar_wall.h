@@ -2,6 +2,7 @@
 /// @file
 /// A wall of space: a plane polygon (a rectangle, the floor, any simple outline) holding the soil
 /// on one side (docs/method/geometry-3d.md, "Planar walls").
+#include <cmath>
 #include <span>
 #include <string>
 #include <vector>
@@ -24,6 +25,13 @@ struct PlanarWall {
   /// The point of the plane at plane coordinates q.
   Vec3 at(Vec2 q) const { return origin + q.x * u + q.y * v; }
 };
+
+/// The axis (0: x, 1: y, 2: z) the unit normal n lies along, within 10⁻¹², or −1 if none.
+inline int axis_along(Vec3 n) {
+  const double c[3] = {std::abs(n.x), std::abs(n.y), std::abs(n.z)};
+  const int axis = c[0] >= c[1] && c[0] >= c[2] ? 0 : c[1] >= c[2] ? 1 : 2;
+  return c[axis] > 1.0 - 1e-12 ? axis : -1;
+}
 
 /// The wall through `points` (≥ 3 vertices of a simple polygon, counter-clockwise seen from the
 /// soil: the right-hand rule makes the normal point into the soil, as a 2D wall holds the soil on

@@ -61,7 +61,7 @@ bool PairList<dim>::search_needed(const Coordinates<dim>& x) const {
 template <int dim>
   requires(dim == 2 || dim == 3)
 void PairList<dim>::search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary,
-                           std::span<const std::uint64_t> soil_ids) {
+                           std::span<const std::uint64_t> soil_ids, std::size_t image_begin) {
   const std::size_t n = x[0].size();
   const double radius = kernel.support() + kSkinRatio * kernel.smoothing_length();
   const SearchRadii radii{radius * radius, kernel.support() * kernel.support(),
@@ -87,7 +87,8 @@ void PairList<dim>::search(const Coordinates<dim>& x, const Kernel& kernel, std:
   block.candidates.clear();
   const auto rows = static_cast<std::ptrdiff_t>(n);
 #pragma omp for schedule(static)
-  for (std::ptrdiff_t s = 0; s < rows; ++s) search_row(static_cast<std::size_t>(s), x, radii, first_boundary, block, thread);
+  for (std::ptrdiff_t s = 0; s < rows; ++s)
+    search_row(static_cast<std::size_t>(s), x, radii, {first_boundary, image_begin}, block, thread);
   // The pair slots of this thread's rows, grown only (first touched by the thread that fills them).
   const std::size_t slots = block.candidates.size();
   if (block.neighbour.size() < slots) {
@@ -118,18 +119,18 @@ void PairList<dim>::set_binning_order(std::span<const std::uint64_t> soil_ids, s
 template <int dim>
   requires(dim == 2 || dim == 3)
 void PairList<dim>::search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii,
-                               std::size_t first_boundary, Block& block, unsigned block_index) {
+                               Parts parts, Block& block, unsigned block_index) {
   struct Candidate {
     double r2;
     int j;
   };
   thread_local std::vector<Candidate> found;  // grows to the largest row once, then reused
   found.clear();
-  const bool boundary_i = i >= first_boundary;
+  const bool boundary_i = i >= parts.first_boundary, image_i = i >= parts.image_begin;
   const auto band = [&](double r2) { return static_cast<std::size_t>(r2 >= radii.inner2) + (r2 >= radii.support2); };
   std::array<double, dim> xi;
   for (std::size_t d = 0; d < dim; ++d) xi[d] = x[d][i];
-  for_each_stencil_row<dim>(cells_.cell_of_point(x, i), [&](const typename CellGrid<dim>::Cell& row) {
+  if (!image_i) for_each_stencil_row<dim>(cells_.cell_of_point(x, i), [&](const typename CellGrid<dim>::Cell& row) {
     const typename CellGrid<dim>::Run run = cells_.row_of_three(row);
     for (std::size_t k = 0; k < run.size; ++k) {
       std::array<double, dim> r;
@@ -138,7 +139,7 @@ void PairList<dim>::search_row(std::size_t i, const Coordinates<dim>& x, const S
       if (r2 >= radii.search2) continue;
       const int j = run.index[k];
       const auto uj = static_cast<std::size_t>(j);
-      if (uj == i || (boundary_i && uj >= first_boundary)) continue;
+      if (uj == i || (boundary_i && uj >= parts.first_boundary && uj < parts.image_begin)) continue;
       found.push_back({r2, j});
     }
   });

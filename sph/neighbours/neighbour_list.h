@@ -3,7 +3,8 @@
 /// The neighbour list, in 2 or 3 dimensions: for every particle i, the particles j ≠ i within the
 /// kernel support, with the pair quantities the stages need precomputed once per step, in flat
 /// arrays (see Storage). Boundary–boundary pairs are left out: no stage uses them (a ghost particle only reads
-/// the soil around it).
+/// the soil around it), except that a ghost's row lists the soil's mirror images too, which stand
+/// for soil behind a symmetry plane, and an image has no row.
 ///
 /// What a pair row holds depends on the dimension. In 2D (~21 pairs a particle at h = 1.3Δp):
 /// x_i − x_j, W_ij and ∇_i W_ij, so that no pass reads a neighbour's position. In 3D (~74 pairs,
@@ -31,6 +32,7 @@
 /// by one thread, which then does all the work.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -93,14 +95,17 @@ class PairList {
   /// True before the first search, for a different point count, or when a point has moved more
   /// than half the skin since the last search (serial; O(n)).
   bool search_needed(const Coordinates<dim>& x) const;
-  /// The cell-list search for candidates within 2h + s. A row lists its candidates by cell, and
+  /// The cell-list search for candidates within 2h + s. Points [image_begin, size) are mirror images
+  /// (stages/mirror_images.h): boundary points that are candidates of every row but have no row of
+  /// their own (their values are copied, not summed). A row lists its candidates by cell, and
   /// within a cell the soil by `soil_ids` (one per soil point; none: the indices), then the
   /// boundary by index: the rows, and so every sum over them, depend on the positions and ids alone,
   /// not on the order the soil is stored in. Throws std::runtime_error for a position that is not
   /// finite or points spread over too large a domain (in the calling thread that does the cell
   /// binning; call from a try block inside a parallel region).
   void search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary,
-              std::span<const std::uint64_t> soil_ids = {});
+              std::span<const std::uint64_t> soil_ids = {},
+              std::size_t image_begin = std::numeric_limits<std::size_t>::max());
   /// The pairs of particle i within the support, from its candidates (no synchronisation).
   void fill_row(std::size_t i, const Coordinates<dim>& x, const Kernel& kernel);
 
@@ -184,10 +189,14 @@ class PairList {
   struct SearchRadii {
     double search2, support2, inner2;
   };
+  /// Where the boundary points and, among them, the mirror images begin.
+  struct Parts {
+    std::size_t first_boundary, image_begin;
+  };
   /// Appends the candidates of particle i within the search radius to `block` and records the row's
   /// place.
-  void search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii, std::size_t first_boundary,
-                  Block& block, unsigned block_index);
+  void search_row(std::size_t i, const Coordinates<dim>& x, const SearchRadii& radii, Parts parts, Block& block,
+                  unsigned block_index);
 
   /// The order the points are binned in when the soil's ids are not increasing: the soil by id,
   /// then the boundary; empty when the ids are (the indices' order is theirs).

@@ -151,7 +151,7 @@ void mirror_stress_onto_ghost(ParticlesOf<dim>& p, const PairList<dim>& nl, std:
     const double delta = -dot(body, n) * dot(offset, n) / sum_w;  // Δ above
     const Eigen::Vector3d nn{n.x, n.y, n.z};
     Eigen::Matrix3d ghost = ghost_stress(mean, n, shear.traction) + delta * nn * nn.transpose();
-    // The image across the further free-slip planes the ghost lies behind: σ_ab s_a s_b.
+    // The image across the further free-slip walls the ghost lies behind: σ_ab s_a s_b.
     const Eigen::Vector3d sign{p.image_sign_x[g], p.image_sign_y[g], p.image_sign_z[g]};
     ghost = ghost.cwiseProduct(sign * sign.transpose());
     p.sxx[b] = ghost(0, 0), p.syy[b] = ghost(1, 1), p.szz[b] = ghost(2, 2);
@@ -188,7 +188,7 @@ void mirror_velocity_onto_ghost(const ParticlesOf<dim>& p, const PairList<dim>& 
     const Vec3 ghost = ghost_velocity({sum[0] / sum_w, sum[1] / sum_w, sum[2] / sum_w},
                                 {p.wall_vx[g], p.wall_vy[g], p.wall_vz[g]}, {p.wall_nx[g], p.wall_ny[g], p.wall_nz[g]},
                                 s);
-    // The image across the further free-slip planes the ghost lies behind: v_a s_a.
+    // The image across the further free-slip walls the ghost lies behind: v_a s_a.
     v[0][b] = p.image_sign_x[g] * ghost.x, v[1][b] = p.image_sign_y[g] * ghost.y, v[2][b] = p.image_sign_z[g] * ghost.z;
   }
 }
