@@ -346,10 +346,10 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
     std::swap(p.x, next.position[0]), std::swap(p.y, next.position[1]), std::swap(p.z, next.position[2]);
   }
   setup.walls.advance(p, work.time, dt);
-  work.images.place(p);
   work.time += dt;
   const std::size_t pushed = setup.guard.apply(p, work.time);
   work.health.guard_corrections += pushed;
+  work.images.place(p);  // where the soil is now, the wall guard's corrections included
   work.previous_dt = dt;
   const SoilTotals totals = soil_totals(setup, p, work.sound_speed);
   work.max_speed = std::sqrt(totals.v2_max);

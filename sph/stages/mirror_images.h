@@ -61,8 +61,8 @@ class MirrorImagesOf {
   bool any() const { return !planes_.empty(); }
 
   /// Replaces p's images [image_begin, size()) by those of the soil at `soil` (positions of the
-  /// soil particles, the neighbour search's), placed at the soil's present positions with its
-  /// present mass, density and velocity, their wall attributes those of their first plane (serial).
+  /// soil particles, the neighbour search's), placed (place()) where the soil is now, with its mass
+  /// and density, their wall attributes those of their first plane (serial).
   void rebuild(ParticlesOf<dim>& p, const Coordinates<dim>& soil) {
     images_.clear();
     const double reach2 = reach_ * reach_;
@@ -94,25 +94,26 @@ class MirrorImagesOf {
       }
     }
     p.resize_boundary(p.image_begin - p.soil_count + images_.size());
-    for (std::size_t k = 0; k < images_.size(); ++k) set_wall_attributes(p, k);
-    place(p);
-    const auto velocity = p.velocity_arrays();
     for (std::size_t k = 0; k < images_.size(); ++k) {
-      const Image& image = images_[k];
-      const std::size_t b = p.image_begin + k;
-      p.mass[b] = p.mass[image.source];
-      p.density[b] = p.density[image.source];
-      for (int a = 0; a < dim; ++a) (*velocity[a])[b] = image.sign[a] * (*velocity[a])[image.source];
+      set_wall_attributes(p, k);
+      const std::size_t b = p.image_begin + k, j = images_[k].source;
+      p.mass[b] = p.mass[j], p.density[b] = p.density[j];
     }
+    place(p);
   }
 
-  /// Puts every image at its soil particle's reflected position (serial; after each drift).
+  /// Gives every image its soil particle's reflected position and velocity (serial; at the close of
+  /// each step, after the drift and the wall guard).
   void place(ParticlesOf<dim>& p) const {
     const auto x = positions(p);
+    const auto v = p.velocity_arrays();
     for (std::size_t k = 0; k < images_.size(); ++k) {
       const Image& image = images_[k];
       const std::size_t b = p.image_begin + k;
-      for (int a = 0; a < dim; ++a) (*x[a])[b] = image.sign[a] * (*x[a])[image.source] + image.shift[a];
+      for (int a = 0; a < dim; ++a) {
+        (*x[a])[b] = image.sign[a] * (*x[a])[image.source] + image.shift[a];
+        (*v[a])[b] = image.sign[a] * (*v[a])[image.source];
+      }
     }
   }
 
