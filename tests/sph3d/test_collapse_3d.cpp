@@ -73,13 +73,10 @@ TEST_CASE("the slab of space at 2 mm rests as the plane's column: runout within 
 TEST_CASE("the slab released by its lifted gate ([[boundaries]]) rests as the plane's gate-lift column",
           "[collapse-3d]") {
   // data/scenes/slab-gate-lift-3d.toml as shipped (2 mm, 5 layers, the gate a moving [[boundaries]]
-  // rectangle) against data/scenes/gate-lift.toml at the same spacing. Measured 2026-12-05: the
-  // runout where the deposit is H0/10 thick 2.1 % shorter in the slab (0.1096 m against 0.1120 m),
-  // the farthest toe 2.6 % longer, the height 0.9 % higher, the angle 0.5° flatter; both at rest
-  // at 0.43 s. The bands are the slab's released at once above, but 3 % for the body's runout (not
-  // investigated further; one difference from the plane: the edge blocks behind the gate and a
-  // symmetry plane hold the plane's ghosts, not the gate's, which the moving gate must not carry
-  // away, docs/method/geometry-3d.md).
+  // rectangle) against data/scenes/gate-lift.toml at the same spacing. Measured 2026-12-05 (the
+  // slab's planes mirrored by the soil's images): the runout where the deposit is H0/10 thick 1.7 %
+  // shorter in the slab (0.1102 m against 0.1120 m), the farthest toe 8 % longer, the height 0.1 %
+  // higher, the angle 0.1° steeper; both at rest at 0.44 s.
   const Scene3 slab_scene =
       load_scene_3d(std::string(SOILSPH_SOURCE_DIR) + "/data/scenes/slab-gate-lift-3d.toml",
                     std::vector<std::string>{"output.frame_interval=1.0"});
@@ -88,7 +85,7 @@ TEST_CASE("the slab released by its lifted gate ([[boundaries]]) rests as the pl
                  std::vector<std::string>{"scene.particle_spacing=0.002", "output.frame_interval=1.0"});
   REQUIRE(slab_scene.geometry.particle_spacing == plane_scene.geometry.particle_spacing);
   const RunStatistics slab_run = check_rests_as_plane(
-      slab_scene, plane_scene, {.runout_thick = 0.03, .runout = 0.15, .height = 0.02, .angle_deg = 1.0});
+      slab_scene, plane_scene, {.runout_thick = 0.02, .runout = 0.15, .height = 0.02, .angle_deg = 1.0});
   CHECK(slab_run.guard_corrections == 0);
 }
 
