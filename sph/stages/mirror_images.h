@@ -7,7 +7,7 @@
 /// which average the soil around them, would also stand where the mirror half holds no soil: beside
 /// a heap's free surface, where a lattice ghost next to the apex particle acts as a full-mass copy
 /// of it, so that the apex has about twice the neighbours of its exact mirror, far too low a
-/// density rate, and blows up (docs/validation/three-dimensions.md, "The apex").
+/// density rate, and blows up (docs/method/geometry-3d.md, "Symmetry planes").
 ///
 /// The planes are normal to an axis, so a reflection flips one coordinate about the plane's offset
 /// o_a, x_a → 2 o_a − x_a, and the image across the planes of a set S of distinct axes has a sign
@@ -17,14 +17,14 @@
 /// which leaves the normal velocity mirrored and the shear stress on the plane mirrored: free slip.
 ///
 /// The images are rebuilt at each neighbour search, from the soil's positions there. Every soil
-/// particle within the search radius R = 2h + s (neighbours/neighbour_list.h) of a plane gets an
-/// image across it; where planes meet, one across each set of them whose distances d_k from the
-/// particle have √(Σ d_k²) ≤ R (the image's distance from the corner they make). Why that is
-/// enough: until the next search every particle moves less than s/2, so a soil particle i and the
-/// image of j across S stay at least √(Σ_{k∈S} (d_i,k + d_j,k)²) ≥ √(Σ d_j,k²) > R − s/2 > 2h
-/// apart if j was left out; no pair within the support is missed. A ghost behind a plane takes the
-/// images into its kernel average as the soil they stand for (its row lists them,
-/// neighbours/neighbour_list.h), so the reach is longer by the ghost layers' corner diagonal
+/// particle within the reach of a plane gets an image across it; where planes meet, one across
+/// each set of them whose distances d_k from the particle have √(Σ d_k²) within the reach (the
+/// image's distance from the line or corner they make). For the soil's rows the search radius
+/// R = 2h + s (neighbours/neighbour_list.h) is enough: until the next search every particle moves
+/// less than s/2, so a soil particle i and the image of j across S stay at least
+/// √(Σ_{k∈S} (d_i,k + d_j,k)²) ≥ √(Σ d_j,k²) > R − s/2 > 2h apart if j was left out. A ghost behind
+/// a plane takes the images into its kernel average as the soil they stand for (its row lists them,
+/// neighbours/neighbour_list.h), so the reach is R plus the ghost layers' corner diagonal
 /// (setup_parts.h, image_reach). In order of the soil particle's id, then of the set of planes (a
 /// bit mask over them): the rows, hence the sums, depend neither on the thread count nor on the
 /// order the soil is stored in.
@@ -55,7 +55,7 @@ template <int dim>
 class MirrorImagesOf {
  public:
   MirrorImagesOf() = default;
-  /// The images across `planes` of the soil within `reach` (m) of them: the search radius 2h + s.
+  /// The images across `planes` of the soil within `reach` (m) of them (setup_parts.h, image_reach).
   MirrorImagesOf(std::vector<SymmetryPlane> planes, double reach) : planes_(std::move(planes)), reach_(reach) {}
 
   bool any() const { return !planes_.empty(); }
