@@ -139,6 +139,13 @@ struct ParticlesOf : ThirdAxisArrays<dim> {
     else
       return {x, y, this->z};
   }
+  /// The coordinate arrays (x, y[, z]), for the step's drift.
+  std::array<std::vector<double>*, dim> position_arrays() {
+    if constexpr (dim == 2)
+      return {&x, &y};
+    else
+      return {&x, &y, &this->z};
+  }
   /// The velocity arrays (vx, vy[, vz]).
   std::array<std::vector<double>*, dim> velocity_arrays() {
     if constexpr (dim == 2)

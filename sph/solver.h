@@ -135,16 +135,18 @@ template <int dim>
 struct NextStateOf {
   std::array<std::vector<double>, dim> velocity;  ///< v^{n+½}
   std::vector<double> density;                    ///< ρ^{n+1}
-  /// x^{n+1}, in space only: there a pair takes x_i − x_j from the positions
-  /// (neighbours/neighbour_list.h), which the drift must not change under the loop that still reads
-  /// them; the plane's pairs hold x_i − x_j, so it drifts in place. The ghosts' entries are brought
-  /// up to date only where walls move (close_step).
-  std::array<std::vector<double>, dim == 3 ? 3 : 0> position;
+  /// x^{n+1}: a pair takes x_i − x_j from the positions (neighbours/neighbour_list.h), which the
+  /// drift must not change under the loop that still reads them. The ghosts' entries are brought up
+  /// to date only where walls move (close_step).
+  std::array<std::vector<double>, dim> position;
 
   explicit NextStateOf(const ParticlesOf<dim>& p) : density(p.density) {
     const auto v = velocities(p);
-    for (int a = 0; a < dim; ++a) velocity[a].assign(v[a].begin(), v[a].end());
-    if constexpr (dim == 3) position = {p.x, p.y, p.z};
+    const auto x = p.coordinates();
+    for (int a = 0; a < dim; ++a) {
+      velocity[a].assign(v[a].begin(), v[a].end());
+      position[a].assign(x[a].begin(), x[a].end());
+    }
   }
   /// Room for n particles (the soil's mirror images change in number; their entries are written
   /// before they are read).
@@ -333,18 +335,16 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
   NextStateOf<dim>& next = work.next;
   for (int a = 0; a < dim; ++a) std::swap(*velocity[a], next.velocity[a]);
   std::swap(p.density, next.density);
-  if constexpr (dim == 3) {
-    // The ghosts' entries of next.position are those the last swap left there: where walls move,
-    // bring them up to date first, so that the walls' motion below moves each ghost on from where
-    // it is.
-    if (setup.walls.any) {
-      const auto ghosts = static_cast<std::ptrdiff_t>(p.soil_count);
-      for (const auto& [now, later] : {std::pair{&p.x, &next.position[0]}, std::pair{&p.y, &next.position[1]},
-                                       std::pair{&p.z, &next.position[2]}})
-        std::copy(now->begin() + ghosts, now->end(), later->begin() + ghosts);
-    }
-    std::swap(p.x, next.position[0]), std::swap(p.y, next.position[1]), std::swap(p.z, next.position[2]);
+  // The ghosts' entries of next.position are those the last swap left there: where walls move,
+  // bring them up to date first, so that the walls' motion below moves each ghost on from where it
+  // is.
+  const auto position = p.position_arrays();
+  if (setup.walls.any) {
+    const auto ghosts = static_cast<std::ptrdiff_t>(p.soil_count);
+    for (int a = 0; a < dim; ++a)
+      std::copy(position[a]->begin() + ghosts, position[a]->end(), next.position[a].begin() + ghosts);
   }
+  for (int a = 0; a < dim; ++a) std::swap(*position[a], next.position[a]);
   setup.walls.advance(p, work.time, dt);
   work.time += dt;
   const std::size_t pushed = setup.guard.apply(p, work.time);
@@ -480,10 +480,10 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
     for (std::ptrdiff_t s = soil; s < lattice_end; ++s)
       mirror_velocity_onto_ghost(p, nl, static_cast<std::size_t>(s), next.velocity_spans());
     // 4. Eq 23 and eq 11 in one pass from v^{n+½} at x^n; σ^{n+1}; ρ^{n+1}; drift to x^{n+1} (no
-    //    stage of this loop reads σ of a neighbour, nor x in the plane, whose pairs hold x_i − x_j; in
-    //    space, where they are taken from the positions, x^{n+1} goes to next.position). One loop per
-    //    material, its model chosen once here by every thread alike. The groups are disjoint: one
-    //    barrier after the last.
+    //    stage of this loop reads σ of a neighbour; the pairs take x_i − x_j from the positions, so
+    //    x^{n+1} goes to next.position). One loop per material, its model chosen once here by every
+    //    thread alike. The groups are disjoint: one barrier after the last.
+    const auto x = p.coordinates();
     std::size_t group = 0;
     detail::for_each_group(groups, [&](const auto& model, const auto& fallback, std::size_t begin,
                                        std::size_t end) {
@@ -492,14 +492,7 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
             p, nl, i, std::as_const(next).velocity_spans(), pairs.volume, setup.velocity_gradient_correction);
         update_particle_stress(model, fallback, p, i, rates.L, dt, health.failure);
         next.density[i] = p.density[i] + dt * rates.density_rate;
-        if constexpr (dim == 2) {
-          p.x[i] += dt * next.velocity[0][i];
-          p.y[i] += dt * next.velocity[1][i];
-        } else {
-          next.position[0][i] = p.x[i] + dt * next.velocity[0][i];
-          next.position[1][i] = p.y[i] + dt * next.velocity[1][i];
-          next.position[2][i] = p.z[i] + dt * next.velocity[2][i];
-        }
+        for (int a = 0; a < dim; ++a) next.position[a][i] = x[a][i] + dt * next.velocity[a][i];
       });
     });
 #pragma omp barrier
@@ -683,7 +676,7 @@ class TimeLoop {
     stats_ = statistics_now();
     stats_.workspace_bytes =
         work_.pairs.neighbours.bytes() +
-        (dim + 2 + work_.next.position.size()) * p_.size() * sizeof(double);  // the next state, volume
+        (2 * dim + 2) * p_.size() * sizeof(double);  // the next state (v, ρ, x), volume
     return stats_;
   }
 

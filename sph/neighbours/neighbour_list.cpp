@@ -170,49 +170,25 @@ void PairList<dim>::fill_row(std::size_t i, const Coordinates<dim>& x, const Ker
   const std::size_t first = row_first_[i], candidates = candidate_count_[i];
   const int* candidate = block.candidates.data() + first;
   int* const j_row = block.neighbour.data() + first;
-  std::array<double*, kPairDoubles> row;
-  for (std::size_t a = 0; a < kPairDoubles; ++a) row[a] = block.pairs[a].data() + first;
+  double* const w_row = block.pairs[0].data() + first;
+  double* const g_row = block.pairs[1].data() + first;
+  std::array<double, dim> xi;
+  for (int d = 0; d < dim; ++d) xi[d] = x[d][i];
   std::size_t k = 0;
-  if constexpr (dim == 2) {
-    const double xi = x[0][i], yi = x[1][i];
-    const std::span<const double> xs = x[0], ys = x[1];
-    double* const rx_row = row[0];
-    double* const ry_row = row[1];
-    double* const w_row = row[2];
-    double* const gx_row = row[3];
-    double* const gy_row = row[4];
-    for (std::size_t c = 0; c < candidates; ++c) {
-      const int j = candidate[c];
-      const auto uj = static_cast<std::size_t>(j);
-      const double rxij = xi - xs[uj], ryij = yi - ys[uj];
-      const double r2 = rxij * rxij + ryij * ryij;
-      if (r2 >= support2) continue;
-      const auto [value, dw_over_r] = W.value_and_gradient_factor(std::sqrt(r2));
-      j_row[k] = j;
-      rx_row[k] = rxij;
-      ry_row[k] = ryij;
-      w_row[k] = value;
-      gx_row[k] = dw_over_r * rxij;
-      gy_row[k] = dw_over_r * ryij;
-      ++k;
+  for (std::size_t c = 0; c < candidates; ++c) {
+    const int j = candidate[c];
+    const auto uj = static_cast<std::size_t>(j);
+    double r2 = 0.0;
+    for (int d = 0; d < dim; ++d) {
+      const double r = xi[d] - x[d][uj];
+      r2 += r * r;
     }
-  } else {
-    const double xi = x[0][i], yi = x[1][i], zi = x[2][i];
-    const std::span<const double> xs = x[0], ys = x[1], zs = x[2];
-    double* const w_row = row[0];
-    double* const g_row = row[1];
-    for (std::size_t c = 0; c < candidates; ++c) {
-      const int j = candidate[c];
-      const auto uj = static_cast<std::size_t>(j);
-      const double rxij = xi - xs[uj], ryij = yi - ys[uj], rzij = zi - zs[uj];
-      const double r2 = rxij * rxij + ryij * ryij + rzij * rzij;
-      if (r2 >= support2) continue;
-      const auto [value, dw_over_r] = W.value_and_gradient_factor(std::sqrt(r2));
-      j_row[k] = j;
-      w_row[k] = value;
-      g_row[k] = dw_over_r;
-      ++k;
-    }
+    if (r2 >= support2) continue;
+    const auto [value, dw_over_r] = W.value_and_gradient_factor(std::sqrt(r2));
+    j_row[k] = j;
+    w_row[k] = value;
+    g_row[k] = dw_over_r;
+    ++k;
   }
   count_[i] = k;
 }

@@ -6,11 +6,13 @@
 /// the soil around it), except that a ghost's row lists the soil's mirror images too, which stand
 /// for soil behind a symmetry plane, and an image has no row.
 ///
-/// What a pair row holds depends on the dimension. In 2D (~21 pairs a particle at h = 1.3Δp):
-/// x_i − x_j, W_ij and ∇_i W_ij, so that no pass reads a neighbour's position. In 3D (~74 pairs,
-/// and 92 candidates within the search radius in the lattice): j, W_ij and dW/dr / r only, 20 B a
-/// pair instead of 44 B; a pass takes x_i − x_j from the positions (∇_i W_ij = dW/dr / r ·
-/// (x_i − x_j)), which keeps a soil particle's row near 2.3 KB (bytes()).
+/// A pair row holds j, W_ij and dW/dr / r (20 B a pair); a pass takes x_i − x_j from the positions
+/// and ∇_i W_ij = dW/dr / r · (x_i − x_j). Storing x_i − x_j and ∇_i W_ij as well (44 B a pair in
+/// 2D) saves those products but makes a large run stream more than twice the bytes from memory on
+/// every pass over the rows; at 10⁶ particles the rows, not the arithmetic, set the step's pace
+/// (docs/performance.md, "Cost against the particle count"). In 2D ~21 pairs a particle at
+/// h = 1.3Δp; in 3D ~74, and 92 candidates within the search radius in the lattice, which keeps a
+/// soil particle's row near 2.3 KB (bytes()).
 ///
 /// Storage: each row holds exactly its candidates (and as many pair slots), in the block of the
 /// thread that searched it, so a ghost far from the soil (no candidates: boundary–boundary pairs are
@@ -41,33 +43,16 @@
 
 namespace soilsph::sph {
 
-/// The pairs a row stores, per dimension (see the file comment).
-template <int dim>
-struct PairRow;
-template <>
-struct PairRow<2> {
+/// The pairs a row stores (see the file comment), in either dimension.
+struct PairRow {
   /// One pair (i, j) within the support.
   struct Pair {
     std::size_t j;
-    double rx, ry;  ///< x_i − x_j (m)
-    double w;       ///< W_ij
-    double gx, gy;  ///< ∇_i W_ij = dW/dr (x_i − x_j)/r (1/m³)
-  };
-  /// The pairs of particle i as contiguous arrays (pair k: neighbour j[k], x_i − x_j = (rx[k], ry[k]),
-  /// W w[k], ∇_i W (gx[k], gy[k])), for loops the compiler vectorises across pairs.
-  struct Row {
-    const int* j;
-    const double *rx, *ry, *w, *gx, *gy;
-    std::size_t size;
-  };
-};
-template <>
-struct PairRow<3> {
-  struct Pair {
-    std::size_t j;
     double w;          ///< W_ij
-    double dw_over_r;  ///< dW/dr / r at r = |x_i − x_j| (1/m⁶): ∇_i W_ij is it times x_i − x_j
+    double dw_over_r;  ///< dW/dr / r at r = |x_i − x_j| (1/m^{dim+3}): ∇_i W_ij is it times x_i − x_j
   };
+  /// The pairs of particle i as contiguous arrays (pair k: neighbour j[k], W w[k], dW/dr / r
+  /// dw_over_r[k]), for loops the compiler vectorises across pairs.
   struct Row {
     const int* j;
     const double *w, *dw_over_r;
@@ -80,8 +65,8 @@ template <int dim>
 class PairList {
  public:
   using Kernel = CubicSplineKernel<dim>;
-  using Pair = typename PairRow<dim>::Pair;
-  using Row = typename PairRow<dim>::Row;
+  using Pair = PairRow::Pair;
+  using Row = PairRow::Row;
 
   /// Anchors the search's cell grid at a fixed origin (neighbours/cell_list.h): the candidates'
   /// order then depends on the positions alone.
@@ -142,22 +127,13 @@ class PairList {
   Row row(std::size_t i) const {
     const Block& b = blocks_[row_block_[i]];
     const std::size_t k = row_first_[i];
-    if constexpr (dim == 2)
-      return {b.neighbour.data() + k, b.pairs[0].data() + k, b.pairs[1].data() + k, b.pairs[2].data() + k,
-              b.pairs[3].data() + k, b.pairs[4].data() + k, count_[i]};
-    else
-      return {b.neighbour.data() + k, b.pairs[0].data() + k, b.pairs[1].data() + k, count_[i]};
+    return {b.neighbour.data() + k, b.pairs[0].data() + k, b.pairs[1].data() + k, count_[i]};
   }
   /// Calls f(pair) for every pair of particle i, as filled by fill_row().
   template <class F>
   void for_each_pair(std::size_t i, F&& f) const {
     const Row r = row(i);
-    for (std::size_t k = 0; k < r.size; ++k) {
-      if constexpr (dim == 2)
-        f(Pair{static_cast<std::size_t>(r.j[k]), r.rx[k], r.ry[k], r.w[k], r.gx[k], r.gy[k]});
-      else
-        f(Pair{static_cast<std::size_t>(r.j[k]), r.w[k], r.dw_over_r[k]});
-    }
+    for (std::size_t k = 0; k < r.size; ++k) f(Pair{static_cast<std::size_t>(r.j[k]), r.w[k], r.dw_over_r[k]});
   }
 
   std::size_t size() const { return count_.size(); }
@@ -174,12 +150,12 @@ class PairList {
   std::size_t bytes_per_particle() const { return size() == 0 ? 0 : bytes() / size(); }
 
   static constexpr double kSkinRatio = 0.25;  ///< s/h
-  /// The doubles stored per pair: x_i − x_j, W, ∇W in 2D; W, dW/dr / r in 3D.
-  static constexpr int kPairDoubles = dim == 2 ? 5 : 2;
+  /// The doubles stored per pair: W and dW/dr / r.
+  static constexpr int kPairDoubles = 2;
 
  private:
   /// The rows one thread searched, back to back: candidate slots, and for pair k of a row (i,
-  /// j = neighbour[k]) j and the kPairDoubles arrays of PairRow<dim>, as many slots as candidates.
+  /// j = neighbour[k]) j and the kPairDoubles arrays of PairRow, as many slots as candidates.
   struct Block {
     std::vector<int> candidates, neighbour;
     std::array<std::vector<double>, kPairDoubles> pairs;

@@ -3,31 +3,32 @@
 namespace soilsph::sph {
 namespace {
 
-/// The pair x_i − x_j and ∇_i W_ij of row position k (neighbour j): stored in the plane, from the
-/// positions and dW/dr / r in space.
+/// The pair x_i − x_j and ∇_i W_ij of row position k (neighbour j), from the positions and
+/// dW/dr / r.
 template <int dim>
 std::pair<std::array<double, dim>, std::array<double, dim>> pair_vectors(const ParticlesOf<dim>& p,
-                                                                         const typename PairList<dim>::Row& row,
+                                                                         const PairRow::Row& row,
                                                                          std::size_t i, std::size_t k, std::size_t j) {
-  if constexpr (dim == 2) {
-    return {{row.rx[k], row.ry[k]}, {row.gx[k], row.gy[k]}};
-  } else {
-    const std::array<double, 3> r{p.x[i] - p.x[j], p.y[i] - p.y[j], p.z[i] - p.z[j]};
-    const double f = row.dw_over_r[k];
-    return {r, {f * r[0], f * r[1], f * r[2]}};
-  }
+  const auto x = p.coordinates();
+  std::array<double, dim> r, g;
+  for (int d = 0; d < dim; ++d) r[d] = x[d][i] - x[d][j], g[d] = row.dw_over_r[k] * r[d];
+  return {r, g};
 }
 
 /// The stress and viscosity terms of row i, summed with `omp simd` across the pairs. In the plane
-/// from the stored scalars: the form GCC vectorises two pairs to an SSE2 vector, whose order of
-/// summation the plane's results are bit for bit tied to.
-AccelerationOf<2> stress_and_viscosity_sum(const ParticlesOf<2>&, const PairAccelerationOf<2>& term,
-                                           const PairList<2>::Row& row) {
+/// on scalars: the form GCC vectorises two pairs to an SSE2 vector, whose order of summation the
+/// plane's results are bit for bit tied to.
+AccelerationOf<2> stress_and_viscosity_sum(const ParticlesOf<2>& p, const PairAccelerationOf<2>& term,
+                                           const PairList<2>::Row& row, std::size_t i) {
+  const double* const xs = p.x.data();
+  const double* const ys = p.y.data();
+  const double xi = xs[i], yi = ys[i];
   double ax = 0.0, ay = 0.0;
 #pragma omp simd reduction(+ : ax, ay)
   for (std::size_t k = 0; k < row.size; ++k) {
     const auto j = static_cast<std::size_t>(row.j[k]);
-    const auto a = term.stress_and_viscosity(j, row.rx[k], row.ry[k], row.gx[k], row.gy[k]);
+    const double rx = xi - xs[j], ry = yi - ys[j], f = row.dw_over_r[k];
+    const auto a = term.stress_and_viscosity(j, rx, ry, f * rx, f * ry);
     ax += a.x;
     ay += a.y;
   }
@@ -53,11 +54,7 @@ AccelerationOf<dim> acceleration_sum(const ParticlesOf<dim>& p, const PairList<d
                                      std::size_t i, bool any_tension) {
   const PairAccelerationOf<dim> term(p, m, i);
   const typename PairList<dim>::Row row = nl.row(i);
-  AccelerationOf<dim> a;
-  if constexpr (dim == 2)
-    a = stress_and_viscosity_sum(p, term, row);
-  else
-    a = stress_and_viscosity_sum(p, term, row, i);
+  AccelerationOf<dim> a = stress_and_viscosity_sum(p, term, row, i);
   if (any_tension && term.artificial_stress_enabled())
     for (std::size_t k = 0; k < row.size; ++k) {
       const auto j = static_cast<std::size_t>(row.j[k]);

@@ -1,9 +1,9 @@
 #pragma once
 /// @file
 /// What a stage reads of one pair (i, j) whatever the dimension: j, W_ij, x_i − x_j and ∇_i W_ij as
-/// arrays of the dimension. The plane's pair rows store them (neighbours/neighbour_list.h); space's
-/// store W and dW/dr / r only, and x_i − x_j is taken from the positions here, ∇_i W_ij = dW/dr / r ·
-/// (x_i − x_j). Stages written once over PairVectors<dim> read as their equation in index notation.
+/// arrays of the dimension. The pair rows store W and dW/dr / r only (neighbours/neighbour_list.h);
+/// x_i − x_j is taken from the positions here, ∇_i W_ij = dW/dr / r · (x_i − x_j). Stages written
+/// once over PairVectors<dim> read as their equation in index notation.
 #include <array>
 #include <cstddef>
 
@@ -23,15 +23,14 @@ struct PairVectors {
 /// Calls f(PairVectors) for every pair of particle i of the list `nl` over the particles p.
 template <int dim, class F>
 void for_each_pair_vectors(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t i, F&& f) {
-  if constexpr (dim == 2) {
-    nl.for_each_pair(i, [&](const typename PairList<2>::Pair& q) { f(PairVectors<2>{q.j, q.w, {q.rx, q.ry}, {q.gx, q.gy}}); });
-  } else {
-    const double xi = p.x[i], yi = p.y[i], zi = p.z[i];
-    nl.for_each_pair(i, [&](const typename PairList<3>::Pair& q) {
-      const std::array<double, 3> r{xi - p.x[q.j], yi - p.y[q.j], zi - p.z[q.j]};
-      f(PairVectors<3>{q.j, q.w, r, {q.dw_over_r * r[0], q.dw_over_r * r[1], q.dw_over_r * r[2]}});
-    });
-  }
+  const auto x = p.coordinates();
+  std::array<double, dim> xi;
+  for (int d = 0; d < dim; ++d) xi[d] = x[d][i];
+  nl.for_each_pair(i, [&](const PairRow::Pair& q) {
+    PairVectors<dim> v{.j = q.j, .w = q.w};
+    for (int d = 0; d < dim; ++d) v.r[d] = xi[d] - x[d][q.j], v.g[d] = q.dw_over_r * v.r[d];
+    f(v);
+  });
 }
 
 /// a · b, summed from the first component on (the order the plane's formulas were written in).

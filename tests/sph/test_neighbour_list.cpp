@@ -41,18 +41,14 @@ Coordinates<dim> view(const std::array<std::vector<double>, dim>& x) {
   return c;
 }
 
-/// ∇_i W_ij of a row's pair k, whatever the row stores.
+/// ∇_i W_ij of a row's pair k, from the dW/dr / r it stores.
 template <int dim>
 std::array<double, dim> gradient(const PairList<dim>& nl, const Coordinates<dim>& x, std::size_t i,
                                  std::size_t k) {
   const auto row = nl.row(i);
+  const auto j = static_cast<std::size_t>(row.j[k]);
   std::array<double, dim> g;
-  if constexpr (dim == 2) {
-    g = {row.gx[k], row.gy[k]};
-  } else {
-    const auto j = static_cast<std::size_t>(row.j[k]);
-    for (int d = 0; d < dim; ++d) g[d] = row.dw_over_r[k] * (x[d][i] - x[d][j]);
-  }
+  for (int d = 0; d < dim; ++d) g[d] = row.dw_over_r[k] * (x[d][i] - x[d][j]);
   return g;
 }
 }  // namespace
