@@ -27,12 +27,12 @@ struct RunEstimate {
 inline constexpr double kAssumedThroughput = 5e5;
 /// Bytes a particle holds in a run, per dimension (index 2 or 3): its arrays (ParticlesOf::bytes()
 /// of one particle: 552 B a soil and 213 B a ghost particle in the plane, 704 and 349 B in space),
-/// the step's buffers (32 B; 64 B in space), its row's place (44 B; 52 B) and its row of the
-/// neighbour list (neighbours/neighbour_list.h) at h = 1.3Δp: a soil particle's 24 lattice
-/// candidates of 48 B in the plane, 92 of 24 B in space; a ghost's at most the mean of its layers'
-/// below a lattice soil, 5 and 15.7 (a ghost out of the soil's reach holds none). Rounded up.
-inline constexpr double kSoilBytes[4] = {0, 0, 1800, 3100};
-inline constexpr double kGhostBytes[4] = {0, 0, 550, 850};
+/// the step's buffers (48 B; 64 B in space), its row's place (44 B; 52 B) and its row of the
+/// neighbour list (neighbours/neighbour_list.h) at h = 1.3Δp, slots of 24 B: a soil particle's 24
+/// lattice candidates in the plane, 92 in space; a ghost's at most the mean of its layers' below a
+/// lattice soil, 5 and 15.7 (a ghost out of the soil's reach holds none). Rounded up.
+inline constexpr double kSoilBytes[4] = {0, 0, 1300, 3100};
+inline constexpr double kGhostBytes[4] = {0, 0, 450, 850};
 
 /// Most frames a run may write: each frame rewrites the indexes of all before it
 /// (sph/output/frame_writer.h), so their cost grows with the square of the count.

@@ -130,6 +130,17 @@ TEST_CASE("a 3D particle's neighbour list takes under 3 KB", "[neighbours]") {
   CHECK(nl.bytes_per_particle() <= 3000);
 }
 
+TEST_CASE("a 2D particle's neighbour list takes under 800 B", "[neighbours]") {
+  // 24 lattice points lie within 2h + s = 2.925 dx in the plane; a slot is 24 B (a candidate, j,
+  // W and dW/dr / r), so an interior row takes 576 B and its place 44 B. A row that also stored
+  // x_i − x_j and ∇_i W_ij (48 B a slot) would take about 1.2 KB.
+  const double dx = 1.0e-3;
+  const auto points = jittered_lattice<2>(30, dx, 0.02);
+  PairList<2> nl;
+  nl.build(view<2>(points), CubicSplineKernel<2>(1.3 * dx), points[0].size());
+  CHECK(nl.bytes_per_particle() <= 800);
+}
+
 TEST_CASE("a ghost out of the soil's reach holds no pair slots", "[neighbours]") {
   // Ghosts pair only with soil: a floor of ghosts far below the soil has no candidates, so it adds
   // its rows' places (under 64 B each) and nothing else, where one slot is 24 B and a soil row ~90.
