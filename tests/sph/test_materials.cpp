@@ -187,12 +187,13 @@ TEST_CASE("each material integrates with its own scheme", "[sph][materials]") {
 namespace {
 /// σ^{n+1} of soil particle i by `model` from its state before the step and the velocity gradient
 /// of eq 23 recomputed from what the step left: v^{n+½} (now in p.vx, p.vy, ghosts mirrored), the
-/// pairs at x^n and the volumes m/ρ^n; nullopt where the model cannot update it.
+/// pairs (`at_start`: the particles at x^n, whose x_i − x_j the pairs take) and the volumes m/ρ^n;
+/// nullopt where the model cannot update it.
 template <class Model>
-std::optional<Mat3> stress_by(const Model& model, const State& before, const Particles& p, const Workspace& work,
-                              const SolverSetup& setup, std::size_t i, double dt) {
-  const VelocityGradient L = kinematic_rates_of(p, work.pairs.neighbours, i, {p.vx, p.vy}, work.pairs.volume,
-                                                setup.velocity_gradient_correction)
+std::optional<Mat3> stress_by(const Model& model, const State& before, const Particles& at_start, const Particles& p,
+                              const Workspace& work, const SolverSetup& setup, std::size_t i, double dt) {
+  const VelocityGradient L = kinematic_rates_of(at_start, work.pairs.neighbours, i, {p.vx, p.vy},
+                                                work.pairs.volume, setup.velocity_gradient_correction)
                                  .L;
   StepFailure ignored;
   try {
@@ -221,6 +222,7 @@ TEST_CASE("each group's particles are updated by their own material's model, not
   const double dt = setup.initial_time_step();
   for (double t = 0.0; t < 0.02; t += dt) advance_groups(groups, setup, p, work, dt, [] {});
   const std::vector<State> before(p.state.begin(), p.state.end());
+  const Particles at_start = p;
   advance_groups(groups, setup, p, work, dt, [] {});
   REQUIRE_FALSE(work.health.failed());
   const auto& clay = std::get<ModifiedCamClay>(scene.materials[0]);
@@ -228,10 +230,10 @@ TEST_CASE("each group's particles are updated by their own material's model, not
   std::size_t told_apart[2] = {0, 0};
   for (std::size_t i = 0; i < p.soil_count; ++i) {
     const int k = p.material[i];
-    const std::optional<Mat3> own = k == 0 ? stress_by(clay, before[i], p, work, setup, i, dt)
-                                           : stress_by(sand, before[i], p, work, setup, i, dt);
-    const std::optional<Mat3> other = k == 0 ? stress_by(sand, before[i], p, work, setup, i, dt)
-                                             : stress_by(clay, before[i], p, work, setup, i, dt);
+    const std::optional<Mat3> own = k == 0 ? stress_by(clay, before[i], at_start, p, work, setup, i, dt)
+                                           : stress_by(sand, before[i], at_start, p, work, setup, i, dt);
+    const std::optional<Mat3> other = k == 0 ? stress_by(sand, before[i], at_start, p, work, setup, i, dt)
+                                             : stress_by(clay, before[i], at_start, p, work, setup, i, dt);
     INFO("particle " << i << " of material " << k);
     REQUIRE(own.has_value());
     const double scale = std::max(1.0, own->norm());
