@@ -129,9 +129,10 @@ class PairList {
     const std::size_t k = row_first_[i];
     return {b.neighbour.data() + k, b.pairs[0].data() + k, b.pairs[1].data() + k, count_[i]};
   }
-  /// Calls f(pair) for every pair of particle i, as filled by fill_row().
+  /// Calls f(pair) for every pair of particle i, as filled by fill_row(); always inlined, so that f
+  /// is too (stages/pair_vectors.h).
   template <class F>
-  void for_each_pair(std::size_t i, F&& f) const {
+  [[gnu::always_inline]] void for_each_pair(std::size_t i, F&& f) const {
     const Row r = row(i);
     for (std::size_t k = 0; k < r.size; ++k) f(Pair{static_cast<std::size_t>(r.j[k]), r.w[k], r.dw_over_r[k]});
   }
