@@ -90,7 +90,7 @@ struct SolverSetupOf {
   double checkpoint_interval = 0.0;  ///< s of simulated time between checkpoints (0: none at intervals)
   double constant_stiffness_sound_speed = 0.0;  ///< the largest c of the materials of constant stiffness
   Vec<dim> ghost_body_force{};  ///< body force per mass the ghosts' normal stress balances (m/s²; 0: none)
-  std::vector<SymmetryPlane> symmetry_planes;  ///< mirrored by the soil's images (stages/mirror_images.h)
+  std::vector<SymmetryPlane> symmetry_planes{};  ///< mirrored by the soil's images (stages/mirror_images.h)
   double image_reach = 0.0;  ///< how far from a symmetry plane the soil has images (m; mirror_images.h)
 
   /// Δt of the soil at rest with the initial sound speed: the largest step the run takes while c

@@ -46,12 +46,12 @@ struct Wall {
   std::vector<Vec2> points;
   WallKind kind = WallKind::FreeSlip;
   double friction_angle = 0.0;  ///< degrees, Frictional only
-  WallMotion motion;
-  std::string name;  ///< for messages, e.g. "[[boundaries]] #2"
+  WallMotion motion{};
+  std::string name{};  ///< for messages, e.g. "[[boundaries]] #2"
   /// Set only where the ghosts must sit exactly as a builder computed them (the column shorthand:
   /// W + kΔp, not (W + Δp/2) − Δp/2 + kΔp, so that the column stays bit-identical); otherwise
   /// computed from the points (geometry/lattice.h).
-  std::vector<GhostStrip> strips;
+  std::vector<GhostStrip> strips{};
   /// Its name in the run's histories (boundary_forces.csv): [[boundaries]] name, by default
   /// "boundary_K" for the K-th table; the column's are "floor", "fixed_wall" and "removable_wall".
   std::string label;

@@ -14,21 +14,16 @@ namespace {
 struct FreeFall {
   Particles p = test::lattice(1, 1e-3, 2000.0);
   LinearElastic model{{2000.0, 1.0e6, 0.3}};
-  SolverSetup setup{CubicSpline(1.3e-3),
-                    0.5,
-                    25.0,
-                    1.0,
-                    1.0,
-                    MomentumParams{},  // the artificial stress off
-                    WallGuard{},
-                    WallMotions{},
-                    0.0,
-                    false,
-                    false,
-                    RestCriterion{},
-                    Domain{},
-                    0.0,
-                    0.0};
+  SolverSetup setup{.kernel = CubicSpline(1.3e-3),
+                    .cfl = 0.5,
+                    .sound_speed = 25.0,
+                    .end_time = 1.0,
+                    .frame_interval = 1.0,
+                    .momentum = MomentumParams{},  // the artificial stress off
+                    .guard = WallGuard{},
+                    .walls = WallMotions{},
+                    .rest = RestCriterion{},
+                    .domain = Domain{}};
   FreeFall() {
     setup.momentum.gravity = {0.0, -9.81};
     setup.momentum.smoothing_length = 1.3e-3;
