@@ -162,8 +162,9 @@ void PairList<dim>::search_row(std::size_t i, const Coordinates<dim>& x, const S
 template <int dim>
   requires(dim == 2 || dim == 3)
 void PairList<dim>::fill_row(std::size_t i, const Coordinates<dim>& x, const Kernel& kernel) {
-  // Everything the loop reads besides x in locals: through the stores into the rows the compiler
-  // would otherwise reload the rows' addresses and the kernel's constants at every pair.
+  // Everything the loop reads in locals, the coordinates' spans too: through the stores into the
+  // rows the compiler would otherwise reload the rows' addresses, the kernel's constants and the
+  // coordinates' arrays at every pair.
   const Kernel W = kernel;
   const double support2 = W.support() * W.support();
   Block& block = blocks_[row_block_[i]];
@@ -172,17 +173,17 @@ void PairList<dim>::fill_row(std::size_t i, const Coordinates<dim>& x, const Ker
   int* const j_row = block.neighbour.data() + first;
   double* const w_row = block.pairs[0].data() + first;
   double* const g_row = block.pairs[1].data() + first;
+  const Coordinates<dim> xs = x;
   std::array<double, dim> xi;
-  for (int d = 0; d < dim; ++d) xi[d] = x[d][i];
+  for (int d = 0; d < dim; ++d) xi[d] = xs[d][i];
   std::size_t k = 0;
   for (std::size_t c = 0; c < candidates; ++c) {
     const int j = candidate[c];
     const auto uj = static_cast<std::size_t>(j);
-    double r2 = 0.0;
-    for (int d = 0; d < dim; ++d) {
-      const double r = xi[d] - x[d][uj];
-      r2 += r * r;
-    }
+    std::array<double, dim> r;
+    for (int d = 0; d < dim; ++d) r[d] = xi[d] - xs[d][uj];
+    double r2 = r[0] * r[0];
+    for (int d = 1; d < dim; ++d) r2 += r[d] * r[d];
     if (r2 >= support2) continue;
     const auto [value, dw_over_r] = W.value_and_gradient_factor(std::sqrt(r2));
     j_row[k] = j;
