@@ -248,16 +248,25 @@ constexpr const char* kMarkdownHeader =
     "particle-steps/s | bare loop, 1 thread | ratio | runout (cm) | height (cm) | repose (°) |\n"
     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
+/// A deposit measure in the table: "—" where it is not taken (NaN in the CSV), e.g. the repose angle
+/// of an axisymmetric column.
+std::string measure_cell(double value, const char* format) {
+  if (!std::isfinite(value)) return "—";
+  char cell[32];
+  std::snprintf(cell, sizeof cell, format, value);
+  return cell;
+}
+
 std::string markdown_row(const Measurement& m) {
   char line[512];
-  std::snprintf(
-      line, sizeof line,
-      "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | %.2f | %.2f | "
-      "%.1f |\n",
-      m.scene.c_str(), m.run.c_str(), threads_label(m.threads).c_str(), m.stats.end_time,
-      m.stats.stopped_at_rest ? "yes" : "no", m.stats.steps, 1e6 * m.stats.smallest_time_step,
-      1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.wall_min, m.wall_max, m.rate, m.bare_rate,
-      m.ratio, 100 * m.deposit.runout_m, 100 * m.deposit.height_m, m.deposit.repose_angle_deg);
+  std::snprintf(line, sizeof line,
+                "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | %s | %s | %s |\n",
+                m.scene.c_str(), m.run.c_str(), threads_label(m.threads).c_str(), m.stats.end_time,
+                m.stats.stopped_at_rest ? "yes" : "no", m.stats.steps, 1e6 * m.stats.smallest_time_step,
+                1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.wall_min, m.wall_max, m.rate, m.bare_rate,
+                m.ratio, measure_cell(100 * m.deposit.runout_m, "%.2f").c_str(),
+                measure_cell(100 * m.deposit.height_m, "%.2f").c_str(),
+                measure_cell(m.deposit.repose_angle_deg, "%.1f").c_str());
   return line;
 }
 
