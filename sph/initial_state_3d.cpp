@@ -33,8 +33,7 @@ double friction_coefficient(const Wall3& wall) {
 Vec3 image_signs(const Geometry3& g, const GhostPoint3& b, const std::string& source) {
   const double depth = (g.boundary_layers + 1e-9) * g.particle_spacing;
   const Wall3& own = g.walls[static_cast<std::size_t>(b.wall)];
-  const double own_velocity[3] = {own.motion.velocity.x, own.motion.velocity.y, own.motion.velocity.z};
-  double sign[3] = {1.0, 1.0, 1.0};
+  Vec3 sign{1.0, 1.0, 1.0};
   for (std::size_t w = 0; w < g.walls.size(); ++w) {
     const Wall3& wall = g.walls[w];
     // A symmetry plane's mirror is in the ghost's row already: the soil's images (mirror_images.h).
@@ -48,14 +47,14 @@ Vec3 image_signs(const Geometry3& g, const GhostPoint3& b, const std::string& so
       throw ParameterError(source + ": the free-slip wall \"" + wall.label +
                            "\" meets another wall's ghosts but is not normal to an axis (a corner of two such "
                            "planes is mirrored only where each is normal to x, y or z)");
-    if (own.motion.moves() && own_velocity[axis] != 0.0)
+    if (own.motion.moves() && component(own.motion.velocity, axis) != 0.0)
       throw ParameterError(
           source + ": the wall \"" + own.label + "\" moves across the free-slip wall \"" + wall.label +
           "\", behind which some of its ghosts lie: they would leave it (a moving wall's ghosts "
           "may move only parallel to the free-slip walls they lie behind)");
-    sign[axis] = -sign[axis];
+    sign = with_component(sign, axis, -component(sign, axis));
   }
-  return {sign[0], sign[1], sign[2]};
+  return sign;
 }
 
 /// Several materials: each soil particle's density and mass ρ Δp³ from its own material, and each
@@ -185,12 +184,11 @@ Mat3 geostatic_stress_3d(const Geometry3& g, double density, double k0, double s
   // σ_v (K0 (I − ĝĝ) + ĝĝ); "+ 0.0" turns a −0 of the products into +0 (no −0 shear in output).
   const double vertical = -density * g.gravity_magnitude() * (surface - height);
   const Vec3 d = g.down();
-  const double c[3] = {d.x, d.y, d.z};
   Mat3 sigma;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
-      const double identity = a == b ? 1.0 : 0.0;
-      sigma(a, b) = vertical * (k0 * (identity - c[a] * c[b]) + c[a] * c[b]) + 0.0;
+      const double identity = a == b ? 1.0 : 0.0, dd = component(d, a) * component(d, b);
+      sigma(a, b) = vertical * (k0 * (identity - dd) + dd) + 0.0;
     }
   return sigma;
 }

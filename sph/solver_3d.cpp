@@ -16,9 +16,9 @@ SolverSetupOf<3> make_solver_setup(const Scene3& scene) {
     if (!wall.symmetry_plane) continue;
     // Normal to an axis (read_boundaries_3d.cpp refuses another), so the plane is x_axis = offset.
     const int axis = axis_along(wall.plane.inward);
-    const double origin[3] = {wall.plane.origin.x, wall.plane.origin.y, wall.plane.origin.z};
-    const double inward[3] = {wall.plane.inward.x, wall.plane.inward.y, wall.plane.inward.z};
-    symmetry.push_back({.axis = axis, .offset = origin[axis], .side = inward[axis] > 0.0 ? 1.0 : -1.0,
+    symmetry.push_back({.axis = axis,
+                        .offset = component(wall.plane.origin, axis),
+                        .side = component(wall.plane.inward, axis) > 0.0 ? 1.0 : -1.0,
                         .wall = static_cast<int>(w)});
   }
   return solver_setup<3>(scene, {.guard = guard,

@@ -237,7 +237,8 @@ void add_bench_scaling_command(CLI::App& bench) {
   cmd->add_option("--scenes", o->scenes, "scene names in data/scenes/, 2D or 3D")
       ->delimiter(',')
       ->capture_default_str();
-  cmd->add_option("--set", o->overrides, "override a value of every scene, e.g. --set numerics.kernel=\"wendland\"")
+  cmd->add_option("--set", o->overrides,
+                  "override a value of every scene, e.g. --set numerics.velocity_gradient_correction=true")
       ->take_all()
       ->allow_extra_args(false);
   cmd->add_option("--particles", o->particles, "about this many soil particles per run, by the spacing alone")

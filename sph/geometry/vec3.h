@@ -22,6 +22,12 @@ inline Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
 inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 inline double norm(Vec3 a) { return std::hypot(a.x, a.y, a.z); }
+/// The component of a along an axis (0: x, 1: y, 2: z).
+inline double component(Vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+/// a with its component along an axis replaced by v.
+inline Vec3 with_component(Vec3 a, int axis, double v) {
+  return {axis == 0 ? v : a.x, axis == 1 ? v : a.y, axis == 2 ? v : a.z};
+}
 
 /// The vector of a dimension: Vec<2> is Vec2, Vec<3> is Vec3.
 template <int D>
