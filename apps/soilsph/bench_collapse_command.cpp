@@ -260,7 +260,8 @@ std::string measure_cell(double value, const char* format) {
 std::string markdown_row(const Measurement& m) {
   char line[512];
   std::snprintf(line, sizeof line,
-                "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | %s | %s | %s |\n",
+                "| %s | %s | %s | %.3f | %s | %zu | %.1f–%.1f | %.1f (%.1f–%.1f) | %.3g | %.3g | %.2f | "
+                "%s | %s | %s |\n",
                 m.scene.c_str(), m.run.c_str(), threads_label(m.threads).c_str(), m.stats.end_time,
                 m.stats.stopped_at_rest ? "yes" : "no", m.stats.steps, 1e6 * m.stats.smallest_time_step,
                 1e6 * m.stats.largest_time_step, m.stats.wall_seconds, m.wall_min, m.wall_max, m.rate, m.bare_rate,

@@ -59,7 +59,8 @@ AccelerationOf<dim> acceleration_sum(const ParticlesOf<dim>& p, const PairList<d
     for (std::size_t k = 0; k < row.size; ++k) {
       const auto j = static_cast<std::size_t>(row.j[k]);
       if (!term.has_artificial_stress(j)) continue;
-      const AccelerationOf<dim> r = term.artificial_stress(j, row.w[k], pair_vectors<dim>(x, row, i, k, j).second);
+      const auto g = pair_vectors<dim>(x, row, i, k, j).second;
+      const AccelerationOf<dim> r = term.artificial_stress(j, row.w[k], g);
       for (int c = 0; c < dim; ++c) a[c] += r[c];
     }
   }

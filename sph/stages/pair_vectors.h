@@ -24,7 +24,8 @@ struct PairVectors {
 /// inlined: GCC 12 otherwise keeps it out of line in the velocity-gradient pass, with f called per
 /// pair, which made the plane's step 12 % slower at the paper's column (perf, 2026-12-05).
 template <int dim, class F>
-[[gnu::always_inline]] inline void for_each_pair_vectors(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t i, F&& f) {
+[[gnu::always_inline]] inline void for_each_pair_vectors(const ParticlesOf<dim>& p, const PairList<dim>& nl,
+                                                         std::size_t i, F&& f) {
   const auto x = p.coordinates();
   std::array<double, dim> xi;
   for (int d = 0; d < dim; ++d) xi[d] = x[d][i];
