@@ -119,26 +119,31 @@ TEMPLATE_TEST_CASE_SIG("with an anchored grid a particle's row does not depend o
   }
 }
 
+namespace {
+/// The neighbour list's mean bytes per particle on a lattice of `side` points a side disturbed by
+/// ±2 % of the spacing, at h = 1.3 Δp.
+template <int dim>
+std::size_t lattice_list_bytes(int side) {
+  const double dx = 1.0e-3;
+  const auto points = jittered_lattice<dim>(side, dx, 0.02);
+  PairList<dim> nl;
+  nl.build(view<dim>(points), CubicSplineKernel<dim>(1.3 * dx), points[0].size());
+  return nl.bytes_per_particle();
+}
+}  // namespace
+
 TEST_CASE("a 3D particle's neighbour list takes under 3 KB", "[neighbours]") {
   // 92 lattice points lie within 2h + s = 2.925 dx; a row holds exactly its candidates, 24 B each
-  // (two indices and two doubles), so an interior row of a lattice disturbed by ±2 % of the
-  // spacing takes about 2.2 KB, the rows at the block's faces less.
-  const double dx = 1.0e-3;
-  const auto points = jittered_lattice<3>(8, dx, 0.02);
-  PairList<3> nl;
-  nl.build(view<3>(points), CubicSplineKernel<3>(1.3 * dx), points[0].size());
-  CHECK(nl.bytes_per_particle() <= 3000);
+  // (two indices and two doubles), so an interior row takes about 2.2 KB, the rows at the block's
+  // faces less.
+  CHECK(lattice_list_bytes<3>(8) <= 3000);
 }
 
 TEST_CASE("a 2D particle's neighbour list takes under 800 B", "[neighbours]") {
   // 24 lattice points lie within 2h + s = 2.925 dx in the plane; a slot is 24 B (a candidate, j,
   // W and dW/dr / r), so an interior row takes 576 B and its place 44 B. A row that also stored
   // x_i − x_j and ∇_i W_ij (48 B a slot) would take about 1.2 KB.
-  const double dx = 1.0e-3;
-  const auto points = jittered_lattice<2>(30, dx, 0.02);
-  PairList<2> nl;
-  nl.build(view<2>(points), CubicSplineKernel<2>(1.3 * dx), points[0].size());
-  CHECK(nl.bytes_per_particle() <= 800);
+  CHECK(lattice_list_bytes<2>(30) <= 800);
 }
 
 TEST_CASE("a ghost out of the soil's reach holds no pair slots", "[neighbours]") {
