@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../common/lattice_sums.h"
 #include "sph/kernel.h"
 
 using namespace soilsph::sph;
@@ -98,34 +99,6 @@ double radial_integral(const Kernel& W) {
   return integral * dr / 3.0;
 }
 
-/// On a cubic (square) lattice of spacing dx around a particle at the origin: Σ V W, Σ V ∇W and the
-/// moment Σ V (x_i − x_j) ⊗ ∇_i W_ij, V = dx^dim, which tends to −I as the lattice refines
-/// (∫ u ⊗ ∇W(u) du = −I ∫ W du by parts, u = x_i − x_j, for a kernel of unit integral).
-struct LatticeSums {
-  double sum = 0.0;
-  double gradient[3] = {0, 0, 0};
-  double moment[3][3] = {};
-};
-template <class Kernel>
-LatticeSums lattice_sums(const Kernel& W, double dx) {
-  constexpr int dim = Kernel::dimension;
-  LatticeSums s;
-  const double volume = std::pow(dx, dim);
-  const int zmax = dim == 3 ? 4 : 0;
-  for (int a = -4; a <= 4; ++a)
-    for (int b = -4; b <= 4; ++b)
-      for (int c = -zmax; c <= zmax; ++c) {
-        const double r[3] = {-a * dx, -b * dx, -c * dx};  // x_i − x_j
-        const double rn = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-        s.sum += volume * W.value(rn);
-        const double g = W.value_and_gradient_factor(rn).dw_over_r;
-        for (int p = 0; p < 3; ++p) {
-          s.gradient[p] += volume * g * r[p];
-          for (int q = 0; q < 3; ++q) s.moment[p][q] += volume * r[p] * g * r[q];
-        }
-      }
-  return s;
-}
 }  // namespace
 
 TEMPLATE_TEST_CASE("both kernels integrate to one in 2D and 3D", "[kernel]", CubicSplineKernel<2>,
@@ -161,7 +134,7 @@ TEMPLATE_TEST_CASE("on a 3D lattice the kernels sum to one and the gradient's mo
   const double dx = 1.0e-3;
   for (const double ratio : {1.2, 1.3, 1.5}) {
     const TestType W(ratio * dx);
-    const LatticeSums s = lattice_sums(W, dx);
+    const soilsph::test::LatticeSums s = soilsph::test::lattice_sums(W, dx);
     INFO("h/dx = " << ratio);
     // The lattice sums' quadrature error: up to 2 % at h/dx = 1.2 (Wendland, the wider kernel).
     CHECK(s.sum == Approx(1.0).epsilon(2.5e-2));

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/lattice_sums.h"
 #include "../common/material_toml.h"
 #include "sph/collapse_3d.h"
 #include "sph/diagnostics.h"
@@ -64,23 +65,6 @@ RowMeans row_means(const ParticlesOf<3>& p, std::initializer_list<double> rows) 
     m.depth += kH + 0.5 * kSpacing - p.y[i];  // below the flat top H + Δp/2 of every lattice column
   }
   m.syy /= m.count, m.sxx /= m.count, m.szz /= m.count, m.depth /= m.count;
-  return m;
-}
-
-/// The lattice's gradient moment M = Σ_j V_j (y_j − y_i) ∂W_ij/∂y_i of the kernel W at h over a
-/// full cubic lattice of spacing Δp (V_j = Δp³); the continuum's is 1. A linear stress field's SPH
-/// divergence (eq 12, σ_i/ρ_i² + σ_j/ρ_j²) is M times its exact one, so SPH equilibrium under gravity
-/// holds a vertical stress gradient of ρg/M: derivation in docs/method/sph-3d.md.
-double lattice_gradient_moment(const CubicSplineKernel<3>& W, double spacing) {
-  double m = 0.0;
-  const int n = static_cast<int>(std::ceil(W.support() / spacing));
-  for (int a = -n; a <= n; ++a)
-    for (int b = -n; b <= n; ++b)
-      for (int c = -n; c <= n; ++c) {
-        const double y = b * spacing;  // x_j − x_i = (a, b, c) Δp; ∇_i W_ij = dW/dr / r (x_i − x_j)
-        const double r = spacing * std::sqrt(double(a * a + b * b + c * c));
-        if (r > 0.0) m -= std::pow(spacing, 3) * y * y * W.value_and_gradient_factor(r).dw_over_r;
-      }
   return m;
 }
 
@@ -153,7 +137,10 @@ TEST_CASE("gravity loading in 3D: a box between walls settles at rho g depth, K0
   // The vertical stress gradient over the rows below the top two is SPH's equilibrium gradient ρg/M
   // (M = 0.9935 for the cubic spline at h = 1.3 Δp: 0.65 % steeper than ρg) within 1 % (measured
   // 0.8 % steeper still in this box; 0.4 % in a box twice as wide, 0.1 % at half the spacing).
-  const double moment = lattice_gradient_moment(CubicSplineKernel<3>(1.3 * kSpacing), kSpacing);
+  // M = Σ_j V_j (y_j − y_i) ∂W_ij/∂y_i over a full lattice (1 in the continuum): a linear stress
+  // field's SPH divergence (eq 12) is M times its exact one, so SPH equilibrium under gravity holds
+  // a vertical stress gradient of ρg/M (derivation in docs/method/sph-3d.md).
+  const double moment = -test::lattice_sums(CubicSplineKernel<3>(1.3 * kSpacing), kSpacing).moment[1][1];
   REQUIRE(moment == Approx(0.9935).epsilon(1e-3));
   const double gradient = vertical_stress_gradient(p, {0.0, 0.004, 0.008, 0.012, 0.016, 0.020, 0.024});
   CHECK(gradient == Approx(kRho * kG / moment).epsilon(0.01));
