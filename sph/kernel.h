@@ -17,6 +17,10 @@
 ///   W(R, h) = a_d (1 − R/2)⁴ (2R + 1)   (0 ≤ R < 2),  a_d = 7/(4π h²) in 2D,  21/(16π h³) in 3D,
 ///   dW/dr = a_d/h · (−5R)(1 − R/2)³,  so  dW/dr / r = −5 a_d/h² (1 − R/2)³ (no division).
 /// Both integrate to one over the plane (2D) or space (3D); tests/sph/test_kernel.cpp checks it.
+///
+/// A scene chooses one ([numerics] kernel, SmoothingKernel below); the cubic spline is the paper's.
+/// The Wendland C2 kernel has a non-negative Fourier transform, so it is free of the pairing
+/// instability the cubic spline shows at large neighbour numbers (Dehnen & Aly 2012, MNRAS 425).
 #include <numbers>
 
 namespace soilsph::sph {
@@ -105,6 +109,48 @@ class WendlandC2Kernel {
   double h_;
   double inv_h_;
   double a_d_;
+};
+
+/// The kernel shapes a scene may choose.
+enum class KernelShape { CubicSpline, WendlandC2 };
+
+/// The kernel a scene chose, of either shape. A pass over the pairs asks visit(f), which calls f
+/// with the concrete kernel, so that the shape is chosen once, outside the loop over particles, and
+/// the pair loop is compiled for it (neighbours/neighbour_list.h, solver.h); value() serves the
+/// set-up and the measures, which evaluate W a few times, not per pair and step.
+template <int dim>
+  requires(dim == 2 || dim == 3)
+class SmoothingKernel {
+ public:
+  SmoothingKernel(KernelShape shape, double h) : shape_(shape), cubic_spline_(h), wendland_(h) {}
+  /// A kernel of one shape, so that tests and tools may pass a concrete kernel where the solver's
+  /// parts take the scene's.
+  SmoothingKernel(const CubicSplineKernel<dim>& k)
+      : SmoothingKernel(KernelShape::CubicSpline, k.smoothing_length()) {}
+  SmoothingKernel(const WendlandC2Kernel<dim>& k)
+      : SmoothingKernel(KernelShape::WendlandC2, k.smoothing_length()) {}
+
+  KernelShape shape() const { return shape_; }
+  double smoothing_length() const { return cubic_spline_.smoothing_length(); }
+  double support() const { return cubic_spline_.support(); }
+
+  /// f(kernel) with the concrete kernel of the chosen shape.
+  template <class F>
+  decltype(auto) visit(F&& f) const {
+    if (shape_ == KernelShape::WendlandC2) return f(wendland_);
+    return f(cubic_spline_);
+  }
+  double value(double r) const {
+    return visit([r](const auto& w) { return w.value(r); });
+  }
+  double derivative(double r) const {
+    return visit([r](const auto& w) { return w.derivative(r); });
+  }
+
+ private:
+  KernelShape shape_;
+  CubicSplineKernel<dim> cubic_spline_;
+  WendlandC2Kernel<dim> wendland_;
 };
 
 }  // namespace soilsph::sph

@@ -220,6 +220,9 @@ Numerics read_numerics(const TableReader& t) {
   n.cfl = t.number_or("cfl", 0.5, Range::open_closed(0.0, 2.0));  // limit and margin: docs/method/sph.md
   n.velocity_gradient_correction = t.boolean_or("velocity_gradient_correction", false);
   n.ghost_body_force = t.boolean_or("ghost_body_force", true);
+  n.kernel = t.choice_or("kernel", "cubic-spline", {"cubic-spline", "wendland-c2"}) == "wendland-c2"
+                 ? KernelShape::WendlandC2
+                 : KernelShape::CubicSpline;
   return n;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "constitutive/material.h"
+#include "sph/kernel.h"
 #include "sph/output/frame.h"
 #include "sph/rest.h"
 
@@ -50,6 +51,7 @@ struct Numerics {
   double cfl;                         ///< Δt = cfl · h / (c + |v|max)
   bool velocity_gradient_correction;  ///< kernel-gradient correction of eq 23 (default off)
   bool ghost_body_force;  ///< ghosts continue the soil's weight across their wall (stages/boundaries.h)
+  KernelShape kernel;     ///< the smoothing kernel (sph/kernel.h; default the paper's cubic spline)
 };
 
 /// [output]

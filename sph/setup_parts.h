@@ -39,7 +39,7 @@ inline InitialSoundSpeeds initial_sound_speeds(const std::vector<Material>& mate
 
 /// The momentum equation's parameters of a scene (stages/momentum.h).
 template <int dim>
-MomentumParamsOf<dim> momentum_params(const Numerics& numerics, const CubicSplineKernel<dim>& kernel,
+MomentumParamsOf<dim> momentum_params(const Numerics& numerics, const SmoothingKernel<dim>& kernel,
                                       Vec<dim> gravity, double spacing, double sound_speed) {
   MomentumParamsOf<dim> momentum;
   momentum.viscosity_alpha = numerics.viscosity_alpha;
@@ -58,7 +58,7 @@ MomentumParamsOf<dim> momentum_params(const Numerics& numerics, const CubicSplin
 /// block (√3 × their depth), so that a ghost behind the plane, which takes the images into its
 /// kernel average as the soil they stand for, has every one within its search radius too.
 template <int dim>
-double image_reach(const CubicSplineKernel<dim>& kernel, double ghost_depth) {
+double image_reach(const SmoothingKernel<dim>& kernel, double ghost_depth) {
   return (2.0 + PairList<dim>::kSkinRatio) * kernel.smoothing_length() + std::sqrt(3.0) * ghost_depth;
 }
 
@@ -78,7 +78,7 @@ struct GeometryParts {
 template <int dim, class Scene>
 SolverSetupOf<dim> solver_setup(const Scene& scene, GeometryParts<dim> parts) {
   const auto& g = scene.geometry;
-  const CubicSplineKernel<dim> kernel(g.smoothing_length());
+  const SmoothingKernel<dim> kernel(scene.numerics.kernel, g.smoothing_length());
   const InitialSoundSpeeds c = initial_sound_speeds(scene.materials, largest_initial_pressure(scene));
   return {.kernel = kernel,
           .cfl = scene.numerics.cfl,

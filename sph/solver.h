@@ -74,7 +74,7 @@ using WallGuardOf = std::conditional_t<dim == 2, WallGuard, PlaneGuard>;
 /// Everything fixed for a run, derived from the scene once.
 template <int dim>
 struct SolverSetupOf {
-  CubicSplineKernel<dim> kernel;
+  SmoothingKernel<dim> kernel;  ///< the scene's shape ([numerics] kernel) and h
   double cfl;          ///< C in Δt = C h / (c + |v|_max)
   double sound_speed;  ///< c at the start (m/s); also the artificial viscosity's c̄
   double end_time;     ///< s
@@ -430,24 +430,26 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
         pairs.any_tension.store(true, std::memory_order_relaxed);
       set_momentum_source(p, i);
     };
-    balanced(work.balance.prepare, 0, p.soil_count, [&](std::size_t i) {
-      nl.fill_row(i, p.coordinates(), setup.kernel);
-      prepare_sources(i);
-    });
-    if (lattice_end < all) {
+    setup.kernel.visit([&](const auto& kernel) {  // the shape chosen once, outside the loops
+      balanced(work.balance.prepare, 0, p.soil_count, [&](std::size_t i) {
+        nl.fill_row(i, p.coordinates(), kernel);
+        prepare_sources(i);
+      });
+      if (lattice_end < all) {
 #pragma omp for schedule(static)
-      for (std::ptrdiff_t s = lattice_end; s < all; ++s) {
-        work.images.copy_stress(p, static_cast<std::size_t>(s));
-        prepare_sources(static_cast<std::size_t>(s));
+        for (std::ptrdiff_t s = lattice_end; s < all; ++s) {
+          work.images.copy_stress(p, static_cast<std::size_t>(s));
+          prepare_sources(static_cast<std::size_t>(s));
+        }
       }
-    }
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t s = soil; s < lattice_end; ++s) {
-      const auto b = static_cast<std::size_t>(s);
-      nl.fill_row(b, p.coordinates(), setup.kernel);
-      mirror_stress_onto_ghost(p, nl, b, setup.ghost_body_force);
-      prepare_sources(b);
-    }
+      for (std::ptrdiff_t s = soil; s < lattice_end; ++s) {
+        const auto b = static_cast<std::size_t>(s);
+        nl.fill_row(b, p.coordinates(), kernel);
+        mirror_stress_onto_ghost(p, nl, b, setup.ghost_body_force);
+        prepare_sources(b);
+      }
+    });
     // 2. a^n (eq 12, 36–38) and the kick to v^{n+½}, kept apart from v^{n−½}, which neighbours read.
     //    Each particle's own ρ and σ, whatever its material: no interface model (docs/reference/scenes.md).
     const bool any_tension = pairs.any_tension.load(std::memory_order_relaxed);  // after loop 1's barrier

@@ -64,7 +64,7 @@ std::string coordinates_text(Vec3 v) {
 
 template <int dim>
 GaugeSetOf<dim>::GaugeSetOf(std::vector<GaugeOf<dim>> gauges, const ParticlesOf<dim>& p, double spacing,
-                            const CubicSplineKernel<dim>& kernel, const std::string& source)
+                            const SmoothingKernel<dim>& kernel, const std::string& source)
     : gauges_(std::move(gauges)), particle_(gauges_.size(), 0), kernel_(kernel) {
   for (std::size_t g = 0; g < gauges_.size(); ++g) {
     if (gauges_[g].kind != GaugeKind::Particle) continue;

@@ -45,7 +45,7 @@ class GaugeSetOf {
   /// Resolves the particle gauges on the particles at t = 0 (x0, y0[, z0]); throws ParameterError
   /// naming `source` and the gauge if no soil particle lies within one spacing of a particle gauge.
   GaugeSetOf(std::vector<GaugeOf<dim>> gauges, const ParticlesOf<dim>& p, double spacing,
-             const CubicSplineKernel<dim>& kernel, const std::string& source);
+             const SmoothingKernel<dim>& kernel, const std::string& source);
 
   const std::vector<GaugeOf<dim>>& gauges() const { return gauges_; }
   bool empty() const { return gauges_.empty(); }
@@ -58,7 +58,7 @@ class GaugeSetOf {
  private:
   std::vector<GaugeOf<dim>> gauges_;
   std::vector<std::uint64_t> particle_;  ///< the id of the followed particle of each particle gauge
-  CubicSplineKernel<dim> kernel_;
+  SmoothingKernel<dim> kernel_;
 };
 using GaugeSet = GaugeSetOf<2>;
 

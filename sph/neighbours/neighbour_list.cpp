@@ -41,8 +41,10 @@ void PairList<dim>::build(const Coordinates<dim>& x, const Kernel& kernel, std::
   needed = search_needed(x);
   if (needed) search(x, kernel, first_boundary, soil_ids);
   const auto n = static_cast<std::ptrdiff_t>(x[0].size());
+  kernel.visit([&](const auto& w) {
 #pragma omp for schedule(static)
-  for (std::ptrdiff_t s = 0; s < n; ++s) fill_row(static_cast<std::size_t>(s), x, kernel);
+    for (std::ptrdiff_t s = 0; s < n; ++s) fill_row(static_cast<std::size_t>(s), x, w);
+  });
 }
 
 template <int dim>
@@ -161,11 +163,12 @@ void PairList<dim>::search_row(std::size_t i, const Coordinates<dim>& x, const S
 
 template <int dim>
   requires(dim == 2 || dim == 3)
-void PairList<dim>::fill_row(std::size_t i, const Coordinates<dim>& x, const Kernel& kernel) {
+template <PairKernel K>
+void PairList<dim>::fill_row(std::size_t i, const Coordinates<dim>& x, const K& kernel) {
   // Everything the loop reads in locals, the coordinates' spans too: through the stores into the
   // rows the compiler would otherwise reload the rows' addresses, the kernel's constants and the
   // coordinates' arrays at every pair.
-  const Kernel W = kernel;
+  const K W = kernel;
   const double support2 = W.support() * W.support();
   Block& block = blocks_[row_block_[i]];
   const std::size_t first = row_first_[i], candidates = candidate_count_[i];
@@ -208,5 +211,9 @@ std::size_t PairList<dim>::bytes() const {
 
 template class PairList<2>;
 template class PairList<3>;
+template void PairList<2>::fill_row(std::size_t, const Coordinates<2>&, const CubicSplineKernel<2>&);
+template void PairList<2>::fill_row(std::size_t, const Coordinates<2>&, const WendlandC2Kernel<2>&);
+template void PairList<3>::fill_row(std::size_t, const Coordinates<3>&, const CubicSplineKernel<3>&);
+template void PairList<3>::fill_row(std::size_t, const Coordinates<3>&, const WendlandC2Kernel<3>&);
 
 }  // namespace soilsph::sph

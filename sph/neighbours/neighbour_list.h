@@ -33,6 +33,7 @@
 /// thread of an enclosing parallel region (the solver's one region per run) or, outside any region,
 /// by one thread, which then does all the work.
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -42,6 +43,13 @@
 #include "sph/neighbours/cell_list.h"
 
 namespace soilsph::sph {
+
+/// A kernel of one shape (sph/kernel.h), which a row's fill evaluates at every pair.
+template <class K>
+concept PairKernel = requires(const K& k, double r) {
+  { k.value_and_gradient_factor(r) } -> std::same_as<ValueAndGradientFactor>;
+  { k.support() } -> std::same_as<double>;
+};
 
 /// The pairs a row stores (see the file comment), in either dimension.
 struct PairRow {
@@ -64,7 +72,7 @@ template <int dim>
   requires(dim == 2 || dim == 3)
 class PairList {
  public:
-  using Kernel = CubicSplineKernel<dim>;
+  using Kernel = SmoothingKernel<dim>;
   using Pair = PairRow::Pair;
   using Row = PairRow::Row;
 
@@ -91,8 +99,10 @@ class PairList {
   void search(const Coordinates<dim>& x, const Kernel& kernel, std::size_t first_boundary,
               std::span<const std::uint64_t> soil_ids = {},
               std::size_t image_begin = std::numeric_limits<std::size_t>::max());
-  /// The pairs of particle i within the support, from its candidates (no synchronisation).
-  void fill_row(std::size_t i, const Coordinates<dim>& x, const Kernel& kernel);
+  /// The pairs of particle i within the support, from its candidates (no synchronisation), with a
+  /// concrete kernel (a pass takes it from SmoothingKernel::visit outside its loop).
+  template <PairKernel K>
+  void fill_row(std::size_t i, const Coordinates<dim>& x, const K& kernel);
 
   // The plane's calls with the coordinates apart (the 2D solver's).
   void build(std::span<const double> x, std::span<const double> y, const Kernel& kernel, std::size_t first_boundary)
@@ -116,7 +126,8 @@ class PairList {
   {
     search({x, y}, kernel, first_boundary);
   }
-  void fill_row(std::size_t i, std::span<const double> x, std::span<const double> y, const Kernel& kernel)
+  template <PairKernel K>
+  void fill_row(std::size_t i, std::span<const double> x, std::span<const double> y, const K& kernel)
     requires(dim == 2)
   {
     fill_row(i, {x, y}, kernel);

@@ -48,7 +48,7 @@ std::vector<std::string> gauge_names(const std::vector<GaugeOf<dim>>& gauges) {
 
 template <int dim>
 HistoriesOf<dim>::HistoriesOf(const SceneOf<dim>& scene, const ParticlesOf<dim>& particles,
-                              const CubicSplineKernel<dim>& kernel)
+                              const SmoothingKernel<dim>& kernel)
     : scene_(scene),
       walls_(walls_present(scene)),
       gauges_(scene.gauges, particles, scene.geometry.particle_spacing, kernel, scene.source) {}

@@ -22,7 +22,7 @@ class HistoriesOf {
  public:
   /// For `scene` with its particles as they start (or as a checkpoint holds them, x0, y0[, z0]
   /// included); throws ParameterError for a gauge outside the soil, before any file is touched.
-  HistoriesOf(const SceneOf<dim>& scene, const ParticlesOf<dim>& particles, const CubicSplineKernel<dim>& kernel);
+  HistoriesOf(const SceneOf<dim>& scene, const ParticlesOf<dim>& particles, const SmoothingKernel<dim>& kernel);
 
   /// Opens the files in `dir`: new ones, or those of a run resumed at `resume_time` (≥ 0).
   void open(const std::filesystem::path& dir, double resume_time = -1.0);

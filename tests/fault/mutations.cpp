@@ -544,6 +544,13 @@ std::vector<Spec> make_specs() {
                {"true", "false", "\"no\""},
                {},
                {}});
+  s.push_back({"numerics",
+               "kernel",
+               Type::String,
+               false,
+               {"\"cubic-spline\"", "\"wendland-c2\"", "\"Wendland-C2\"", "\"quintic\"", "\"\""},
+               {},
+               {"cubic-spline", "wendland-c2"}});
   // [output]
   s.push_back(
       {"output",

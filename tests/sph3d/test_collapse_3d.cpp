@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/pair_rows.h"
 #include "sph/collapse.h"
 #include "sph/collapse_3d.h"
 
@@ -149,4 +150,30 @@ TEST_CASE("the axisymmetric column at r0/dp = 10: runout radius near Lube et al.
   CHECK(quarter.height_m == Approx(half.height_m).epsilon(0.05));
   // The lattice's anisotropy: the runout varies over azimuths by less than a fifth of its mean.
   CHECK(quarter.runout_radius_spread_m < 0.2 * quarter.runout_radius_m);
+}
+
+TEST_CASE("[numerics] kernel in space: a step's pair rows hold the Wendland C2 kernel, images and ghosts too",
+          "[collapse-3d][kernel]") {
+  // The quarter column at r0/Δp = 10: soil, ghosts under the floor and the soil's images behind the
+  // two symmetry planes, whose ghost rows list them.
+  const std::string column = std::string(SOILSPH_SOURCE_DIR) + "/data/scenes/axisymmetric-column.toml";
+  const std::vector<std::string> overrides = {"scene.particle_spacing=0.01", "numerics.kernel=\"wendland-c2\""};
+  const Scene3 scene = load_scene_3d(column, overrides);
+  const Collapse3 collapse(scene);
+  const SolverSetupOf<3>& setup = collapse.setup();
+  REQUIRE(setup.kernel.shape() == KernelShape::WendlandC2);
+  ParticlesOf<3> p = collapse.particles();
+  WorkspaceOf<3> work(setup, p);
+  // The first step searches and places the images; the second, within the skin, fills its rows
+  // from the positions it starts at.
+  const DruckerPrager& model = std::get<DruckerPrager>(scene.material);
+  advance(model, setup, p, work, setup.initial_time_step());
+  REQUIRE(p.image_begin < p.size());
+  const ParticlesOf<3> at_start = p;
+  const std::size_t searches = work.pairs.neighbours.searches();
+  advance(model, setup, p, work, setup.initial_time_step());
+  REQUIRE(work.pairs.neighbours.searches() == searches);
+  const double h = setup.kernel.smoothing_length();
+  CHECK(test::largest_row_difference(work.pairs.neighbours, at_start, WendlandC2Kernel<3>(h)) < 1e-12);
+  CHECK(test::largest_row_difference(work.pairs.neighbours, at_start, CubicSplineKernel<3>(h)) > 0.1);
 }
