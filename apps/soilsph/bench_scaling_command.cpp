@@ -1,13 +1,16 @@
-// `soilsph bench scaling [--scenes A,B] [--particles N,...] [--steps S] [--threads T,...] [--rounds R]`:
-// how the cost of a particle-step grows with the particle count. Each scene is refined to about
-// each soil particle count by its spacing alone (soil particles ∝ Δp^-dim), and its first S steps
-// are timed with each thread count; every size and thread count runs once per round, alternated, so
-// that a machine whose speed drifts slows all alike, and each row reports the median over the
-// rounds and the ratio of its rate to the smallest size's with the same threads in the same round
-// (1 everywhere: a flat cost). Beside each size, the bare pair loop (sph/bench/bare_pair_loop.h)
+// `soilsph bench scaling [--scenes A,B] [--particles N,...] [--steps S] [--warm-up-steps W]
+// [--threads T,...] [--rounds R]`: how the cost of a particle-step grows with the particle count.
+// Each scene is refined to about each soil particle count by its spacing alone (soil particles ∝
+// Δp^-dim), and S steps after its first W are timed with each thread count (W > 0 leaves out the
+// run's start: the first neighbour search and the page faults of the buffers' first use, which at
+// 10⁶ particles cost several steps and a run to rest pays once). Every size and thread count runs
+// once per round, alternated, so that a machine whose speed drifts slows all alike, and each row
+// reports the median over the rounds and the ratio of its rate to the smallest size's with the same
+// threads in the same round (1 everywhere: a flat cost). Beside each size, the bare pair loop (sph/bench/bare_pair_loop.h)
 // on the same soil points, one thread: the part of any drop that the lattice's own memory traffic
 // explains. Writes DIR/scaling.csv and scaling.md.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -32,6 +35,7 @@ struct ScalingOptions {
   std::vector<std::string> overrides;
   std::vector<double> particles{1e4, 1e5, 1e6};
   int steps = 100;
+  int warm_up_steps = 0;
   std::vector<int> threads{1, 2};
   int rounds = 1;
   double bare_seconds = 0.5;
@@ -96,35 +100,44 @@ SizedScene sized_scene(const ScalingOptions& o, const std::string& name, double 
   return s;
 }
 
-/// The first `steps` steps of a collapse with `threads` threads: wall seconds, workspace bytes.
+/// `steps` steps of a collapse after its first `warm_up`, with `threads` threads: wall seconds,
+/// workspace bytes.
 struct StepsRun {
   double wall_seconds;
   std::size_t workspace_bytes;
 };
 
 template <class Collapse, class Control>
-StepsRun first_steps(Collapse& collapse, Control control, int threads, int steps) {
+StepsRun timed_steps(Collapse& collapse, Control control, int threads, int warm_up, int steps) {
+  using Clock = std::chrono::steady_clock;
+  const auto last = static_cast<std::size_t>(warm_up + steps);
   std::size_t done = 0;
-  control.stop_requested = [&] { return done >= static_cast<std::size_t>(steps); };
+  Clock::time_point start = Clock::now(), end = start;
+  control.stop_requested = [&] { return done >= last; };
   const sph::RunStatistics stats = collapse.run(
-      sph::ThreadTuner(threads, false), [](const auto&, double) {}, [&](double, std::size_t n) { done = n; },
+      sph::ThreadTuner(threads, false), [](const auto&, double) {},
+      [&](double, std::size_t n) {
+        done = n;
+        if (n == static_cast<std::size_t>(warm_up)) start = Clock::now();
+        if (n == last) end = Clock::now();
+      },
       control);
-  if (stats.steps != static_cast<std::size_t>(steps))
+  if (stats.steps != last)
     throw std::runtime_error("bench scaling: " + std::to_string(stats.steps) + " steps run, not " +
-                             std::to_string(steps) + " (the scene ended first: raise its end_time)");
-  return {stats.wall_seconds, stats.workspace_bytes};
+                             std::to_string(last) + " (the scene ended first: raise its end_time)");
+  return {std::chrono::duration<double>(end - start).count(), stats.workspace_bytes};
 }
 
-StepsRun run_first_steps(const SizedScene& s, int threads, int steps) {
+StepsRun run_timed_steps(const SizedScene& s, int threads, int warm_up, int steps) {
   std::vector<std::string> overrides = s.overrides;
   overrides.push_back("scene.stop_at_rest=false");
   const sph::AnyScene any = sph::load_any_scene(s.file, overrides);
   if (const auto* space = std::get_if<sph::Scene3>(&any)) {
     sph::Collapse3 collapse(*space);
-    return first_steps(collapse, sph::RunControlOf<3>{}, threads, steps);
+    return timed_steps(collapse, sph::RunControlOf<3>{}, threads, warm_up, steps);
   }
   sph::Collapse collapse(std::get<sph::Scene>(any));
-  return first_steps(collapse, sph::RunControl{}, threads, steps);
+  return timed_steps(collapse, sph::RunControl{}, threads, warm_up, steps);
 }
 
 /// The bare pair loop's rate on the sized scene's soil points, one thread.
@@ -155,13 +168,14 @@ struct Row {
 
 void write_tables(const ScalingOptions& o, const std::vector<Row>& rows) {
   std::ofstream csv(o.out + "/scaling.csv");
-  csv << "# soilsph bench scaling: SI units; the first `steps` steps of each scene refined by its spacing; rates "
+  csv << "# soilsph bench scaling: SI units; `steps` steps after the first `warm_up_steps` of each scene refined "
+         "by its spacing; rates "
          "in soil particle-steps/s; ratio_to_smallest: the rate over the smallest size's with the same "
          "threads in the same round; bare_rate: bare SPH pair loop on the same soil points, one thread; "
          "rates, walls and ratios are medians over the rounds (runs alternated)\n"
          "scene,dimension,particle_spacing,soil_particles,ghost_particles,threads,steps,wall_seconds,"
          "particle_steps_per_second,ratio_to_smallest,bare_rate,bare_ratio_to_smallest,"
-         "workspace_bytes_per_particle,rounds\n";
+         "workspace_bytes_per_particle,rounds,warm_up_steps\n";
   std::string md =
       "| scene | soil particles | ghosts | threads | wall (s) | soil particle-steps/s | ratio to the smallest | "
       "bare loop | its ratio |\n|---|---|---|---|---|---|---|---|---|\n";
@@ -172,7 +186,7 @@ void write_tables(const ScalingOptions& o, const std::vector<Row>& rows) {
     csv << s.name << ',' << s.dimension << ',' << s.spacing << ',' << s.soil << ',' << s.ghosts << ','
         << r.threads << ',' << o.steps << ',' << median(r.walls) << ',' << median(r.rates) << ','
         << median(r.ratios) << ',' << median(r.bare_rates) << ',' << median(r.bare_ratios) << ','
-        << per_particle << ',' << o.rounds << '\n';
+        << per_particle << ',' << o.rounds << ',' << o.warm_up_steps << '\n';
     char line[512];
     std::snprintf(line, sizeof line, "| %s | %zu | %zu | %d | %.1f | %.3g | %.2f | %.3g | %.2f |\n", s.name.c_str(),
                   s.soil, s.ghosts, r.threads, median(r.walls), median(r.rates), median(r.ratios),
@@ -201,14 +215,15 @@ void run_scaling(const ScalingOptions& o) {
     for (std::size_t k = 0; k < rows.size(); ++k) {
       Row& r = rows[k];
       const SizedScene& s = *r.scene;
-      const StepsRun run = run_first_steps(s, r.threads, o.steps);
+      const StepsRun run = run_timed_steps(s, r.threads, o.warm_up_steps, o.steps);
       rates[k] = static_cast<double>(s.soil) * o.steps / run.wall_seconds;
       r.walls.push_back(run.wall_seconds), r.rates.push_back(rates[k]), r.workspace_bytes = run.workspace_bytes;
       bare[k] = k > 0 && rows[k - 1].scene == &s ? bare[k - 1] : bare_rate(s, o.bare_seconds);
-      std::printf("%s, %zu soil + %zu ghosts, %d thread(s), round %d: %d steps in %.2f s, %.3g soil particle-steps/s; "
-                  "bare loop %.3g\n",
-                  s.name.c_str(), s.soil, s.ghosts, r.threads, round + 1, o.steps, run.wall_seconds, rates[k],
-                  bare[k]);
+      const std::string after = o.warm_up_steps > 0 ? " after " + std::to_string(o.warm_up_steps) : "";
+      std::printf("%s, %zu soil + %zu ghosts, %d thread(s), round %d: %d steps%s in %.2f s, %.3g soil "
+                  "particle-steps/s; bare loop %.3g\n",
+                  s.name.c_str(), s.soil, s.ghosts, r.threads, round + 1, o.steps, after.c_str(), run.wall_seconds,
+                  rates[k], bare[k]);
       std::fflush(stdout);
     }
     // The ratios to the smallest size of the same scene and threads, within this round.
@@ -230,7 +245,7 @@ void add_bench_scaling_command(CLI::App& bench) {
   auto* cmd = bench.add_subcommand(
       "scaling",
       "SPH cost per particle-step against the particle count: each scene refined to about each soil "
-      "particle count, its first steps timed with each thread count, beside the bare pair loop");
+      "particle count, its steps timed with each thread count, beside the bare pair loop");
   auto o = std::make_shared<ScalingOptions>();
   cmd->add_option("--out", o->out, "output directory (scaling.csv, scaling.md)")->capture_default_str();
   cmd->add_option("--root", o->root, "folder holding data/scenes/ (default: the shipped data)");
@@ -245,8 +260,13 @@ void add_bench_scaling_command(CLI::App& bench) {
       ->delimiter(',')
       ->check(CLI::Range(100.0, 1e8))
       ->capture_default_str();
-  cmd->add_option("--steps", o->steps, "steps timed from the start of each run")
+  cmd->add_option("--steps", o->steps, "steps timed in each run, after the warm-up steps")
       ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--warm-up-steps", o->warm_up_steps,
+                  "steps run before the timed ones (0: the run's start, its first neighbour search and the "
+                  "buffers' first touch, is timed too)")
+      ->check(CLI::Range(0, 100000))
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "thread counts, each run at every size")
       ->delimiter(',')
