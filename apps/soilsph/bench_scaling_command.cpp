@@ -6,9 +6,9 @@
 // 10⁶ particles cost several steps and a run to rest pays once). Every size and thread count runs
 // once per round, alternated, so that a machine whose speed drifts slows all alike, and each row
 // reports the median over the rounds and the ratio of its rate to the smallest size's with the same
-// threads in the same round (1 everywhere: a flat cost). Beside each size, the bare pair loop (sph/bench/bare_pair_loop.h)
-// on the same soil points, one thread: the part of any drop that the lattice's own memory traffic
-// explains. Writes DIR/scaling.csv and scaling.md.
+// threads in the same round (1 everywhere: a flat cost). Beside each size, the bare pair loop
+// (sph/bench/bare_pair_loop.h) on the same soil points, one thread: the part of any drop that the
+// lattice's own memory traffic explains. Writes DIR/scaling.csv and scaling.md.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
