@@ -143,9 +143,6 @@ class SmoothingKernel {
   double value(double r) const {
     return visit([r](const auto& w) { return w.value(r); });
   }
-  double derivative(double r) const {
-    return visit([r](const auto& w) { return w.derivative(r); });
-  }
 
  private:
   KernelShape shape_;
