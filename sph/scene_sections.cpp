@@ -219,6 +219,15 @@ Numerics read_numerics(const TableReader& t) {
   n.artificial_stress_exponent = t.number_or("artificial_stress_exponent", 2.55, Range::closed(1.0, 10.0));
   n.cfl = t.number_or("cfl", 0.5, Range::open_closed(0.0, 2.0));  // limit and margin: docs/method/sph.md
   n.velocity_gradient_correction = t.boolean_or("velocity_gradient_correction", false);
+  // δ of Molteni & Colagrossi (2009), 0.1 in DualSPHysics; the explicit diffusion is stable for
+  // δ × cfl up to about 0.3 (stages/continuity.h).
+  n.density_diffusion = t.number_or("density_diffusion", 0.0, Range::closed(0.0, 1.0));
+  if (n.density_diffusion * n.cfl > kLargestDiffusionTimesCfl) {
+    std::ostringstream msg;
+    msg << "must be at most " << kLargestDiffusionTimesCfl << " / cfl = " << kLargestDiffusionTimesCfl / n.cfl
+        << " (the density diffusion's stability with cfl = " << n.cfl << "), got " << n.density_diffusion;
+    t.fail("density_diffusion", msg.str());
+  }
   n.ghost_body_force = t.boolean_or("ghost_body_force", true);
   n.kernel = t.choice_or("kernel", "cubic-spline", {"cubic-spline", "wendland-c2"}) == "wendland-c2"
                  ? KernelShape::WendlandC2

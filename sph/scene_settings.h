@@ -41,6 +41,10 @@ struct InitialConditions {
   GravityLoading gravity_loading{};                   ///< stress = "gravity-loading" only
 };
 
+/// The largest δ × cfl [numerics] accepts for eq 11's density diffusion: alone, with Δt = cfl h/c,
+/// it is stable to δ × cfl ≈ 0.30–0.35 on the lattice at h = 1.3Δp (stages/continuity.h).
+inline constexpr double kLargestDiffusionTimesCfl = 0.25;
+
 /// [numerics]
 struct Numerics {
   double viscosity_alpha;  ///< α_Π, eq 37
@@ -50,6 +54,7 @@ struct Numerics {
   double artificial_stress_exponent;
   double cfl;                         ///< Δt = cfl · h / (c + |v|max)
   bool velocity_gradient_correction;  ///< kernel-gradient correction of eq 23 (default off)
+  double density_diffusion;           ///< δ of eq 11's diffusive term (stages/continuity.h; default 0, none)
   bool ghost_body_force;  ///< ghosts continue the soil's weight across their wall (stages/boundaries.h)
   KernelShape kernel;     ///< the smoothing kernel (sph/kernel.h; default the paper's cubic spline)
 };

@@ -89,7 +89,9 @@ SolverSetupOf<dim> solver_setup(const Scene& scene, GeometryParts<dim> parts) {
           .guard = std::move(parts.guard),
           .walls = std::move(parts.walls),
           .potential_datum = parts.potential_datum,
-          .velocity_gradient_correction = scene.numerics.velocity_gradient_correction,
+          .kinematics = {.corrected = scene.numerics.velocity_gradient_correction,
+                         .density_diffusion =
+                             scene.numerics.density_diffusion * kernel.smoothing_length() * c.largest},
           .pressure_dependent_stiffness = c.pressure_dependent,
           .rest = scene.rest,
           .domain = parts.domain,

@@ -83,7 +83,7 @@ struct SolverSetupOf {
   WallGuardOf<dim> guard;
   WallMotionsOf<dim> walls;     ///< moving and removed walls (stages/wall_motions.h)
   double potential_datum = 0.0; ///< height of the lowest wall along −g (m), for the energy budget
-  bool velocity_gradient_correction = false;  ///< stages/velocity_gradient.h
+  KinematicOptions kinematics{};  ///< eq 23's correction, eq 11's diffusion (stages/velocity_gradient.h)
   bool pressure_dependent_stiffness = false;  ///< recompute c from the pressures at each search
   RestCriterion rest;
   DomainOf<dim> domain;             ///< no soil particle may leave it (blow_up.h)
@@ -490,8 +490,8 @@ void advance_groups(const MaterialGroups& groups, const SolverSetupOf<dim>& setu
     detail::for_each_group(groups, [&](const auto& model, const auto& fallback, std::size_t begin,
                                        std::size_t end) {
       balanced(work.balance.stress[group++], begin, end, [&](std::size_t i) {
-        const KinematicRatesOf<dim> rates = kinematic_rates_of(
-            p, nl, i, std::as_const(next).velocity_spans(), pairs.volume, setup.velocity_gradient_correction);
+        const KinematicRatesOf<dim> rates = kinematic_rates_of(p, nl, i, std::as_const(next).velocity_spans(),
+                                                               pairs.volume, setup.kinematics);
         update_particle_stress(model, fallback, p, i, rates.L, dt, health.failure);
         next.density[i] = p.density[i] + dt * rates.density_rate;
         for (int a = 0; a < dim; ++a) next.position[a][i] = x[a][i] + dt * next.velocity[a][i];

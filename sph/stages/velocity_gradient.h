@@ -98,13 +98,22 @@ bool invert_moment(const std::array<std::array<double, dim>, dim>& m, std::array
   return true;
 }
 
+/// How eq 23 and eq 11 are summed: the scene's [numerics], chosen once per run.
+struct KinematicOptions {
+  bool corrected = false;          ///< eq 23 times M⁻¹ (velocity_gradient_correction, above)
+  double density_diffusion = 0.0;  ///< δ h c of eq 11's diffusive term (m²/s; stages/continuity.h); 0: none
+};
+
 /// `volume_of(j)` gives m_j/ρ_j.
 template <int dim, class Volume>
 KinematicRatesOf<dim> kinematic_rates_with(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t i,
-                                           const VelocitySpans<dim>& v, Volume&& volume_of, bool corrected) {
+                                           const VelocitySpans<dim>& v, Volume&& volume_of,
+                                           const KinematicOptions& options) {
   VelocityGradientOf<dim> L;
   double rate = 0.0;
   std::array<std::array<double, dim>, dim> moment{};  // kernel moment M (x_j − x_i = −r)
+  const bool corrected = options.corrected;
+  const double diffusion = options.density_diffusion, density_i = p.density[i];
   for_each_pair_vectors(p, nl, i, [&](const PairVectors<dim>& q) {
     const std::size_t j = q.j;
     const double volume = volume_of(j);
@@ -113,6 +122,8 @@ KinematicRatesOf<dim> kinematic_rates_with(const ParticlesOf<dim>& p, const Pair
     for (int a = 0; a < dim; ++a)
       for (int b = 0; b < dim; ++b) L.l[a][b] += volume * dv[a] * q.g[b];
     rate -= p.mass[j] * dot(dv, q.g);
+    if (diffusion > 0.0)  // V_j ψ_ij·∇_i W_ij, ψ_ij = 2 (ρ_j − ρ_i)(x_j − x_i)/|x_j − x_i|², x_j − x_i = −r
+      rate += diffusion * volume * 2.0 * (p.density[j] - density_i) * -dot(q.r, q.g) / dot(q.r, q.r);
     if (corrected)
       for (int a = 0; a < dim; ++a)
         for (int b = 0; b < dim; ++b) moment[a][b] -= volume * q.r[a] * q.g[b];
@@ -138,14 +149,15 @@ double particle_volume(const ParticlesOf<dim>& p, std::size_t i) {
 /// With `volume` holding particle_volume of every particle: one division per particle, not per pair.
 template <int dim>
 KinematicRatesOf<dim> kinematic_rates_of(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t i,
-                                         const VelocitySpans<dim>& v, std::span<const double> volume, bool corrected) {
-  return kinematic_rates_with(p, nl, i, v, [&](std::size_t j) { return volume[j]; }, corrected);
+                                         const VelocitySpans<dim>& v, std::span<const double> volume,
+                                         const KinematicOptions& options) {
+  return kinematic_rates_with(p, nl, i, v, [&](std::size_t j) { return volume[j]; }, options);
 }
 /// The same, each volume computed where it is read.
 template <int dim>
 KinematicRatesOf<dim> kinematic_rates_of(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t i,
-                                         const VelocitySpans<dim>& v, bool corrected) {
-  return kinematic_rates_with(p, nl, i, v, [&](std::size_t j) { return particle_volume(p, j); }, corrected);
+                                         const VelocitySpans<dim>& v, const KinematicOptions& options = {}) {
+  return kinematic_rates_with(p, nl, i, v, [&](std::size_t j) { return particle_volume(p, j); }, options);
 }
 
 /// The particles' own velocities v^{n−½} as spans.
@@ -174,7 +186,7 @@ void compute_velocity_gradient(ParticlesOf<dim>& p, const PairList<dim>& nl, boo
 #pragma omp for schedule(static)
   for (std::ptrdiff_t s = 0; s < n; ++s) {
     const auto i = static_cast<std::size_t>(s);
-    const VelocityGradientOf<dim> L = kinematic_rates_of(p, nl, i, velocities(p), corrected).L;
+    const VelocityGradientOf<dim> L = kinematic_rates_of(p, nl, i, velocities(p), {.corrected = corrected}).L;
     for (int a = 0; a < dim; ++a)
       for (int b = 0; b < dim; ++b) (*stored[a][b])[i] = L.l[a][b];
   }

@@ -527,7 +527,7 @@ std::vector<Spec> make_specs() {
                Type::Number,
                false,
                {"0", "2.0", "2.0000001", "1e-300", "1.7", "0.99"},
-               {},
+               {"density_diffusion"},
                {},
                fixed(open_closed(0, 2))});
   s.push_back({"numerics",
@@ -537,6 +537,16 @@ std::vector<Spec> make_specs() {
                {"true", "false", "\"no\""},
                {},
                {}});
+  s.push_back({"numerics",
+               "density_diffusion",
+               Type::Number,
+               false,
+               {"0", "0.1", "0.25", "0.2500001", "-0.1", "1.5", "\"0.1\""},
+               {"cfl"},
+               {},
+               [](const toml::table& d) {  // δ × cfl ≤ 0.25 (sph/scene_settings.h), cfl's default 0.5
+                 return closed(0, std::min(1.0, 0.25 / number_at(d, "numerics", "cfl", 0.5)));
+               }});
   s.push_back({"numerics",
                "ghost_body_force",
                Type::Boolean,

@@ -193,7 +193,7 @@ template <class Model>
 std::optional<Mat3> stress_by(const Model& model, const State& before, const Particles& at_start, const Particles& p,
                               const Workspace& work, const SolverSetup& setup, std::size_t i, double dt) {
   const VelocityGradient L = kinematic_rates_of(at_start, work.pairs.neighbours, i, {p.vx, p.vy},
-                                                work.pairs.volume, setup.velocity_gradient_correction)
+                                                work.pairs.volume, setup.kinematics)
                                  .L;
   StepFailure ignored;
   try {

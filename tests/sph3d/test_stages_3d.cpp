@@ -64,8 +64,8 @@ TEST_CASE("eq 23 in space: the linear field's gradient times the lattice moment,
   const std::size_t c = centre_of(n);
   const double m = lattice_moment(W, dx);
   CHECK(m == Approx(1.0).epsilon(0.03));
-  const VelocityGradientOf<3> plain = kinematic_rates_of(p, nl, c, velocities(p), false).L;
-  const VelocityGradientOf<3> corrected = kinematic_rates_of(p, nl, c, velocities(p), true).L;
+  const VelocityGradientOf<3> plain = kinematic_rates_of(p, nl, c, velocities(p)).L;
+  const VelocityGradientOf<3> corrected = kinematic_rates_of(p, nl, c, velocities(p), {.corrected = true}).L;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
       CHECK(plain.l[a][b] == Approx(A[a][b] * m).epsilon(1e-9));
@@ -73,8 +73,8 @@ TEST_CASE("eq 23 in space: the linear field's gradient times the lattice moment,
     }
   // A particle on a face (z = 0), half its neighbourhood missing: still exact when corrected.
   const std::size_t face = static_cast<std::size_t>(n / 2 * n + n / 2);
-  const VelocityGradientOf<3> on_face = kinematic_rates_of(p, nl, face, velocities(p), true).L;
-  CHECK(kinematic_rates_of(p, nl, face, velocities(p), false).L.l[2][1] != Approx(A[2][1]).epsilon(0.1));
+  const VelocityGradientOf<3> on_face = kinematic_rates_of(p, nl, face, velocities(p), {.corrected = true}).L;
+  CHECK(kinematic_rates_of(p, nl, face, velocities(p)).L.l[2][1] != Approx(A[2][1]).epsilon(0.1));
   CHECK(on_face.l[2][1] == Approx(A[2][1]).epsilon(1e-9));
   CHECK(on_face.l[0][2] == Approx(A[0][2]).epsilon(1e-9));
   // ε̇ and ω̇ split L into its symmetric and skew parts, with every off-diagonal pair.
@@ -85,7 +85,7 @@ TEST_CASE("eq 23 in space: the linear field's gradient times the lattice moment,
   CHECK(spin(1, 2) == Approx(0.5 * (A[1][2] - A[2][1]) * dt));
   CHECK(spin(2, 1) == Approx(-0.5 * (A[1][2] - A[2][1]) * dt));
   // The divergence: Dρ/Dt = −ρ tr A (times the moment) for a uniform density.
-  const double rate = kinematic_rates_of(p, nl, c, velocities(p), false).density_rate;
+  const double rate = kinematic_rates_of(p, nl, c, velocities(p)).density_rate;
   CHECK(rate == Approx(-kDensity * (A[0][0] + A[1][1] + A[2][2]) * m).epsilon(1e-9));
 }
 
@@ -205,4 +205,32 @@ TEST_CASE("a ghost behind an oblique plane mirrors the soil: free slip reflects 
     CHECK(p.vz[b] == Approx(-v[2]));
   }
   CHECK(p.density[b] == Approx(kDensity));
+}
+
+// The density diffusion of eq 11 (stages/continuity.h) on the lattice, at rest, with the particles'
+// masses following the density so that every volume m/ρ is dx³: nothing for a uniform or a linear
+// density, and for ρ = ρ0 (1 + k x²) exactly δhc ∇²ρ = δhc 2kρ0 times the kernel's lattice moment,
+// the same lattice sum as eq 23's.
+TEST_CASE("eq 11's density diffusion in space: a discrete Laplacian, exact on the lattice for a quadratic",
+          "[stages-3d]") {
+  const double dx = 1e-3, k = 2e3, diffusion = 0.1 * 1.3 * dx * 50.0;  // δ h c (m²/s)
+  const int n = 9;
+  const CubicSplineKernel<3> W(1.3 * dx);
+  ParticlesOf<3> p = cube(n, dx);
+  PairList<3> nl;
+  nl.build(p.coordinates(), W, p.size());
+  const std::size_t c = centre_of(n);
+  const KinematicOptions options{.density_diffusion = diffusion};
+  CHECK(kinematic_rates_of(p, nl, c, velocities(p), options).density_rate == 0.0);  // uniform
+  const double xc = p.x[c];
+  const auto set_density = [&](auto&& rho) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      p.density[i] = rho(p.x[i] - xc), p.mass[i] = p.density[i] * dx * dx * dx;
+  };
+  set_density([](double x) { return kDensity * (1.0 + 30.0 * x); });
+  CHECK(std::abs(kinematic_rates_of(p, nl, c, velocities(p), options).density_rate) < 1e-9 * kDensity);
+  set_density([&](double x) { return kDensity * (1.0 + k * x * x); });
+  const double rate = kinematic_rates_of(p, nl, c, velocities(p), options).density_rate;
+  CHECK(rate == Approx(diffusion * 2.0 * k * kDensity * lattice_moment(W, dx)).epsilon(1e-9));
+  CHECK(kinematic_rates_of(p, nl, c, velocities(p)).density_rate == 0.0);  // off: eq 11 as printed
 }
