@@ -4,6 +4,7 @@
 #include "sph/setup_parts.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -48,6 +49,24 @@ double potential_datum(const Scene& scene) {
     for (const Vec2& v : w.points) datum = std::min(datum, g.height(v));
   return datum;
 }
+
+/// The symmetry lines as the planes their images reflect across: along x or y (read_layout.cpp
+/// refuses another), so a line along y is the plane x = its x, the soil on its left.
+std::vector<SymmetryPlane> symmetry_planes(const Scene& scene) {
+  std::vector<SymmetryPlane> planes;
+  const std::vector<Wall>& walls = scene.geometry.layout.walls;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    if (!walls[w].symmetry_plane) continue;
+    const Vec2 a = walls[w].points.front(), along = walls[w].points.back() - a;
+    const Vec2 inward{-along.y, along.x};
+    const int axis = std::abs(inward.x) > std::abs(inward.y) ? 0 : 1;
+    planes.push_back({.axis = axis,
+                      .offset = axis == 0 ? a.x : a.y,
+                      .side = (axis == 0 ? inward.x : inward.y) > 0.0 ? 1.0 : -1.0,
+                      .wall = static_cast<int>(w)});
+  }
+  return planes;
+}
 }  // namespace
 
 template <int dim>
@@ -77,7 +96,9 @@ SolverSetup make_solver_setup(const Scene& scene) {
   return solver_setup<2>(scene, {.guard = wall_guard(scene),
                                  .walls = wall_motions(scene),
                                  .potential_datum = potential_datum(scene),
-                                 .domain = domain(scene)});
+                                 .domain = domain(scene),
+                                 .symmetry_planes = symmetry_planes(scene),
+                                 .boundary_layers = static_cast<double>(scene.geometry.boundary_layers)});
 }
 
 }  // namespace soilsph::sph

@@ -55,12 +55,26 @@ std::optional<Vec2> continuation(const Layout& layout, const Wall& wall, double 
   return std::nullopt;
 }
 
-/// The strip of the piece that ends at the wall's first point, in another wall, or none.
+/// The strip of the piece that ends at the wall's first point, in another wall that has ghosts, or
+/// none.
 std::optional<GhostStrip> predecessor(const Layout& layout, const Wall& wall, double dx, int layers) {
   const Vec2 start = wall.points.front();
   for (const Wall& other : layout.walls)
-    if (&other != &wall && other.motion.removed_at > 0.0 && norm(other.points.back() - start) <= 1e-9 * dx)
+    if (&other != &wall && other.motion.removed_at > 0.0 && !other.symmetry_plane &&
+        norm(other.points.back() - start) <= 1e-9 * dx)
       return strips_of(layout, other, dx, layers).back();
+  return std::nullopt;
+}
+
+/// The direction of the symmetry line that ends at the wall's first point, or none. The line has no
+/// ghosts (the soil's mirror images stand behind it, stages/mirror_images.h), so where the wall
+/// turns from it towards the soil the wall's first piece fills the corner block behind both, as
+/// the piece before an inner corner does otherwise: the floor's ghosts reach on under the line.
+std::optional<Vec2> symmetry_line_before(const Layout& layout, const Wall& wall, double dx) {
+  const Vec2 start = wall.points.front();
+  for (const Wall& other : layout.walls)
+    if (&other != &wall && other.symmetry_plane && norm(other.points.back() - start) <= 1e-9 * dx)
+      return other.points.back() - other.points[other.points.size() - 2];
   return std::nullopt;
 }
 }  // namespace
@@ -78,6 +92,10 @@ std::vector<GhostStrip> strips_of(const Layout& layout, const Wall& wall, double
     const std::optional<Vec2> next = s + 1 < pieces ? std::optional<Vec2>(wall.points[s + 2] - b)
                                                     : continuation(layout, wall, dx);
     if (next && cross(t, *next) > 1e-9 * norm(*next)) strip.count += layers;  // inner corner: fill its block
+    if (s == 0)
+      if (const std::optional<Vec2> line = symmetry_line_before(layout, wall, dx);
+          line && cross(*line, t) > 1e-9 * norm(*line))
+        strip.anchor = strip.anchor - (layers * dx) * t, strip.count += layers;
     strips.push_back(strip);
   }
   return strips;
@@ -87,7 +105,8 @@ std::vector<GhostPoint> ghost_points(const Layout& layout, double dx, int layers
   std::vector<GhostPoint> points;
   for (std::size_t w = 0; w < layout.walls.size(); ++w) {
     const Wall& wall = layout.walls[w];
-    if (wall.motion.removed_at <= 0.0) continue;  // withdrawn at t = 0: never there
+    // Withdrawn at t = 0: never there. A symmetry line: the soil's mirror images stand behind it.
+    if (wall.motion.removed_at <= 0.0 || wall.symmetry_plane) continue;
     const std::vector<GhostStrip> strips = strips_of(layout, wall, dx, layers);
     const std::optional<GhostStrip> before = wall.strips.empty() ? predecessor(layout, wall, dx, layers) : std::nullopt;
     for (std::size_t s = 0; s < strips.size(); ++s) {

@@ -24,6 +24,8 @@ std::vector<SoilNode> soil_nodes(const Layout& layout, double spacing, const std
 /// of them; where the polyline turns towards the soil (an inner corner, e.g. floor then wall) the
 /// piece before the corner runs on `layers` rows past it and fills the corner block. A wall whose
 /// last point is another wall's first point turns into it there (a floor and a wall of two kinds).
+/// A symmetry line has no ghosts of its own (the soil's mirror images stand behind it), so a wall
+/// that turns from one towards the soil starts `layers` rows before its first point instead.
 std::vector<GhostStrip> strips_of(const Layout& layout, const Wall& wall, double spacing, int layers);
 
 struct GhostPoint {
@@ -32,7 +34,8 @@ struct GhostPoint {
   int wall;     ///< index into Layout::walls
 };
 
-/// Every ghost particle of the walls present at t = 0 (not removed_at = 0), wall by wall, strip by
+/// Every ghost particle of the walls present at t = 0 (not removed_at = 0) other than the symmetry
+/// lines (stages/mirror_images.h), wall by wall, strip by
 /// strip, layer by layer. Where the polyline turns away from the soil (an outer corner) a piece's
 /// ghosts that fall in the previous piece's rows are left out, so no two ghosts coincide.
 std::vector<GhostPoint> ghost_points(const Layout& layout, double spacing, int layers);

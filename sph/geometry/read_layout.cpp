@@ -179,8 +179,9 @@ std::vector<Region> read_region(const toml::table& table, const std::string& lab
   return {region};
 }
 
-/// A symmetry line mirrors the soil across one line: its points must lie on it.
-void check_straight(const TableReader& t, const std::vector<Vec2>& points) {
+/// A symmetry line mirrors the soil across one line, x = const or y = const (its ghosts are the
+/// soil's images, reflected along one axis: stages/mirror_images.h): its points must lie on it.
+void check_symmetry_line(const TableReader& t, const std::vector<Vec2>& points) {
   const Vec2 first = points.front(), along = points.back() - first;
   for (std::size_t k = 1; k + 1 < points.size(); ++k) {
     const Vec2 d = points[k] - first;
@@ -189,6 +190,9 @@ void check_straight(const TableReader& t, const std::vector<Vec2>& points) {
                            " is off the line through the first and the last: a symmetry line (kind = "
                            "\"symmetry\") is straight (a bent wall is kind = \"free-slip\")");
   }
+  if (std::min(std::abs(along.x), std::abs(along.y)) > 1e-12 * norm(along))
+    t.fail("points", "run along x or y for kind = \"symmetry\" (the soil's images are reflected along one "
+                     "axis); this line is oblique: take kind = \"free-slip\"");
 }
 
 Wall read_wall(const toml::table& table, const std::string& label, const std::string& source, toml::table& resolved) {
@@ -211,7 +215,7 @@ Wall read_wall(const toml::table& table, const std::string& label, const std::st
   resolved.insert("points", array_of(wall.points));
   const WallKindRead kind = read_wall_kind(t, resolved);
   wall.kind = kind.kind, wall.friction_angle = kind.friction_angle, wall.symmetry_plane = kind.symmetry_plane;
-  if (wall.symmetry_plane) check_straight(t, wall.points);
+  if (wall.symmetry_plane) check_symmetry_line(t, wall.points);
   if (t.has("removed_at")) {
     wall.motion.removed_at = t.number("removed_at", Range::non_negative(), "s");
     resolved.insert("removed_at", wall.motion.removed_at);

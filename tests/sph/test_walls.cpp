@@ -4,9 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 #include "helpers.h"
 #include "../common/material_toml.h"
@@ -311,7 +314,10 @@ std::string refusal(const std::string& text) {
 }
 }  // namespace
 
-TEST_CASE("a symmetry line is a free-slip wall: the same ghosts, named as written, kind kept", "[walls]") {
+TEST_CASE("a symmetry line has no ghosts: the floor's reach on under it; named as written, kind kept", "[walls]") {
+  // Against a free-slip line the ghosts behind it fill the strip x < 0 down to the floor's layers;
+  // against a symmetry line the soil's mirror images stand there instead (stages/mirror_images.h),
+  // and the floor, starting `layers` rows before the line, fills the corner block under both.
   const Scene symmetric = test::scene_from_text(against_line("symmetry"));
   const Scene free_slip = test::scene_from_text(against_line("free-slip"));
   const Wall& axis = symmetric.geometry.layout.walls.front();
@@ -319,13 +325,101 @@ TEST_CASE("a symmetry line is a free-slip wall: the same ghosts, named as writte
   CHECK(axis.kind == WallKind::FreeSlip);
   CHECK(axis.symmetry_plane);
   CHECK(!free_slip.geometry.layout.walls.front().symmetry_plane);
-  CHECK(test::arrays_of(build_particles(symmetric)) == test::arrays_of(build_particles(free_slip)));
+  const Particles with_images = build_particles(symmetric), with_ghosts = build_particles(free_slip);
+  const auto ghost_positions = [](const Particles& p, auto keep) {
+    std::set<std::pair<long long, long long>> at;
+    for (std::size_t i = p.soil_count; i < p.size(); ++i)
+      if (keep(p, i)) at.insert({std::llround(p.x[i] / 1e-4), std::llround(p.y[i] / 1e-4)});
+    return at;
+  };
+  const auto everywhere = [](const Particles&, std::size_t) { return true; };
+  const auto not_beside_the_line = [](const Particles& p, std::size_t i) { return !(p.x[i] < 0.0 && p.y[i] > 0.0); };
+  CHECK(ghost_positions(with_images, everywhere) == ghost_positions(with_ghosts, not_beside_the_line));
+  const int layers = symmetric.geometry.boundary_layers;
+  std::size_t under_the_line = 0;
+  for (std::size_t k = 0; k < with_images.boundary_count(); ++k) {
+    CHECK(with_images.wall_id[k] == 1);
+    if (with_images.x[with_images.soil_count + k] < 0.0) ++under_the_line;
+  }
+  CHECK(under_the_line == static_cast<std::size_t>(layers * layers));
+  CHECK(make_solver_setup(symmetric).symmetry_planes.size() == 1);
+  CHECK(make_solver_setup(free_slip).symmetry_planes.empty());
   // The scene as run keeps the word, and reads back to the same scene.
   const toml::table& resolved = *symmetric.resolved["boundaries"].as_array()->front().as_table();
   CHECK(resolved["kind"].value_or(std::string()) == "symmetry");
   const Scene again = test::scene_from_text(scene_toml(symmetric));
   CHECK(again.geometry.layout.walls.front().symmetry_plane);
   CHECK(scene_toml(again) == scene_toml(symmetric));
+}
+
+TEST_CASE("a half column beside a symmetry line moves as the same half of the whole one, to round-off",
+          "[walls][mirror-images]") {
+  // A Drucker–Prager block 40 × 40 mm on a no-slip floor, collapsing to both sides, run 250 steps
+  // whole and as its half x ≥ 0 beside the symmetry line x = 0. The whole block's lattice and state
+  // are symmetric about x = 0, so each particle of the half must move as the whole block's particle
+  // that started where it did: the images stand where the whole's particles across the line stand,
+  // and the floor's ghosts under the line average them as the whole's floor ghosts average its soil.
+  // A free-slip line's lattice ghosts in place of the images are the control: they stand for soil
+  // where the mirror half holds none (beside the block's top), so the half departs from the whole.
+  // Measured 2026-12-06: 3.5·10⁻¹⁸ m against a largest displacement of 0.66 mm, 6·10⁻¹² Pa against
+  // 769 Pa; with the lattice ghosts 1.2·10⁻⁵ m (1.7 %) and 201 Pa.
+  const auto scene_text = [](const std::string& region, const std::string& walls) {
+    return "[scene]\nparticle_spacing = 0.002\nsmoothing_ratio = 1.3\nend_time = 0.05\ngravity = 9.81\n"
+           "[[regions]]\nshape = \"box\"\n" + region + walls + fixtures::kDruckerPragerToml;
+  };
+  const std::string floor = "[[boundaries]]\nkind = \"no-slip\"\n";
+  const auto half = [&](const std::string& line_kind) {
+    return scene_text("min = [0.0, 0.0]\nmax = [0.02, 0.04]\n",
+                      "[[boundaries]]\nkind = \"" + line_kind + "\"\npoints = [[0.0, 0.08], [0.0, 0.0]]\n" + floor +
+                          "points = [[0.0, 0.0], [0.1, 0.0]]\n");
+  };
+  const auto stepped = [](const std::string& text) {
+    const Scene scene = test::scene_from_text(text);
+    Particles p = build_particles(scene);
+    set_geostatic_state(p, scene);
+    const SolverSetup setup = make_solver_setup(scene);
+    Workspace work(setup, p);
+    const double dt = setup.initial_time_step();
+    for (int step = 0; step < 250; ++step) advance(std::get<DruckerPrager>(scene.material), setup, p, work, dt);
+    REQUIRE(all_finite(p));
+    return p;
+  };
+  const Particles whole = stepped(scene_text("min = [-0.02, 0.0]\nmax = [0.02, 0.04]\n",
+                                             floor + "points = [[-0.1, 0.0], [0.1, 0.0]]\n"));
+  const Particles mirrored = stepped(half("symmetry")), walled = stepped(half("free-slip"));
+  REQUIRE(mirrored.image_count() > 0);
+  std::map<std::pair<long long, long long>, std::size_t> start;
+  const auto key = [](double x, double y) { return std::pair{std::llround(x / 2e-4), std::llround(y / 2e-4)}; };
+  for (std::size_t j = 0; j < whole.soil_count; ++j) start[key(whole.x0[j], whole.y0[j])] = j;
+  struct Departure {
+    double position = 0.0, velocity = 0.0, stress = 0.0;
+  };
+  const auto departure = [&](const Particles& half_run) {
+    Departure worst;
+    for (std::size_t i = 0; i < half_run.soil_count; ++i) {
+      const std::size_t j = start.at(key(half_run.x0[i], half_run.y0[i]));
+      worst.position = std::max(worst.position, std::hypot(half_run.x[i] - whole.x[j], half_run.y[i] - whole.y[j]));
+      worst.velocity = std::max(worst.velocity, std::hypot(half_run.vx[i] - whole.vx[j], half_run.vy[i] - whole.vy[j]));
+      worst.stress = std::max(worst.stress, (half_run.state[i].stress - whole.state[j].stress).cwiseAbs().maxCoeff());
+    }
+    return worst;
+  };
+  double largest = 0.0, fastest = 0.0, largest_stress = 0.0;
+  for (std::size_t j = 0; j < whole.soil_count; ++j) {
+    largest = std::max(largest, std::hypot(whole.x[j] - whole.x0[j], whole.y[j] - whole.y0[j]));
+    fastest = std::max(fastest, std::hypot(whole.vx[j], whole.vy[j]));
+    largest_stress = std::max(largest_stress, whole.state[j].stress.cwiseAbs().maxCoeff());
+  }
+  const Departure images = departure(mirrored), ghosts = departure(walled);
+  INFO("largest displacement " << largest << " m, speed " << fastest << " m/s, stress " << largest_stress
+                               << " Pa; the half's largest departures from the whole, with images: " << images.position
+                               << " m, " << images.velocity << " m/s, " << images.stress << " Pa; with ghosts: "
+                               << ghosts.position << " m, " << ghosts.velocity << " m/s, " << ghosts.stress << " Pa");
+  REQUIRE(largest > 1e-4);
+  CHECK(images.position < 1e-10 * largest);
+  CHECK(images.velocity < 1e-10 * fastest);
+  CHECK(images.stress < 1e-10 * largest_stress);
+  CHECK(ghosts.position > 1e-3 * largest);
 }
 
 TEST_CASE("a symmetry line is straight, takes no friction angle and does not move: errors name file and key",
@@ -346,4 +440,8 @@ TEST_CASE("a symmetry line is straight, takes no friction angle and does not mov
   straight.replace(straight.find("[[0.0, 0.04], [0.0, 0.0]]"), 25, "[[0.0, 0.04], [0.0, 0.02], [0.0, 0.0]]");
   CHECK(refusal(straight).empty());
   CHECK(refusal(against_line("symmetry")).empty());
+  // The images are reflected along one axis: an oblique line is refused.
+  std::string oblique = against_line("symmetry");
+  oblique.replace(oblique.find("[[0.0, 0.04], [0.0, 0.0]]"), 25, "[[-0.01, 0.04], [0.0, 0.0]]");
+  CHECK_THAT(refusal(oblique), Contains("[boundaries #1] points") && Contains("along x or y"));
 }
