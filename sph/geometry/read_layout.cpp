@@ -191,8 +191,9 @@ void check_symmetry_line(const TableReader& t, const std::vector<Vec2>& points) 
                            "\"symmetry\") is straight (a bent wall is kind = \"free-slip\")");
   }
   if (std::min(std::abs(along.x), std::abs(along.y)) > 1e-12 * norm(along))
-    t.fail("points", "run along x or y for kind = \"symmetry\" (the soil's images are reflected along one "
-                     "axis); this line is oblique: take kind = \"free-slip\"");
+    t.fail("points",
+           "run along x or y for kind = \"symmetry\" (the soil's images are reflected along one "
+           "axis); this line is oblique: take kind = \"free-slip\"");
 }
 
 Wall read_wall(const toml::table& table, const std::string& label, const std::string& source, toml::table& resolved) {

@@ -314,7 +314,8 @@ std::string refusal(const std::string& text) {
 }
 }  // namespace
 
-TEST_CASE("a symmetry line has no ghosts: the floor's reach on under it; named as written, kind kept", "[walls]") {
+TEST_CASE("a symmetry line has no ghosts: the floor's ghosts reach under it; named, kind kept",
+          "[walls]") {
   // Against a free-slip line the ghosts behind it fill the strip x < 0 down to the floor's layers;
   // against a symmetry line the soil's mirror images stand there instead (stages/mirror_images.h),
   // and the floor, starting `layers` rows before the line, fills the corner block under both.
@@ -333,7 +334,9 @@ TEST_CASE("a symmetry line has no ghosts: the floor's reach on under it; named a
     return at;
   };
   const auto everywhere = [](const Particles&, std::size_t) { return true; };
-  const auto not_beside_the_line = [](const Particles& p, std::size_t i) { return !(p.x[i] < 0.0 && p.y[i] > 0.0); };
+  const auto not_beside_the_line = [](const Particles& p, std::size_t i) {
+    return !(p.x[i] < 0.0 && p.y[i] > 0.0);
+  };
   CHECK(ghost_positions(with_images, everywhere) == ghost_positions(with_ghosts, not_beside_the_line));
   const int layers = symmetric.geometry.boundary_layers;
   std::size_t under_the_line = 0;
@@ -365,13 +368,14 @@ TEST_CASE("a half column beside a symmetry line moves as the same half of the wh
   // 769 Pa; with the lattice ghosts 1.2·10⁻⁵ m (1.7 %) and 201 Pa.
   const auto scene_text = [](const std::string& region, const std::string& walls) {
     return "[scene]\nparticle_spacing = 0.002\nsmoothing_ratio = 1.3\nend_time = 0.05\ngravity = 9.81\n"
-           "[[regions]]\nshape = \"box\"\n" + region + walls + fixtures::kDruckerPragerToml;
+           "[[regions]]\nshape = \"box\"\n" +
+           region + walls + fixtures::kDruckerPragerToml;
   };
   const std::string floor = "[[boundaries]]\nkind = \"no-slip\"\n";
   const auto half = [&](const std::string& line_kind) {
     return scene_text("min = [0.0, 0.0]\nmax = [0.02, 0.04]\n",
-                      "[[boundaries]]\nkind = \"" + line_kind + "\"\npoints = [[0.0, 0.08], [0.0, 0.0]]\n" + floor +
-                          "points = [[0.0, 0.0], [0.1, 0.0]]\n");
+                      "[[boundaries]]\nkind = \"" + line_kind + "\"\npoints = [[0.0, 0.08], [0.0, 0.0]]\n" +
+                          floor + "points = [[0.0, 0.0], [0.1, 0.0]]\n");
   };
   const auto stepped = [](const std::string& text) {
     const Scene scene = test::scene_from_text(text);
@@ -380,16 +384,19 @@ TEST_CASE("a half column beside a symmetry line moves as the same half of the wh
     const SolverSetup setup = make_solver_setup(scene);
     Workspace work(setup, p);
     const double dt = setup.initial_time_step();
-    for (int step = 0; step < 250; ++step) advance(std::get<DruckerPrager>(scene.material), setup, p, work, dt);
+    for (int step = 0; step < 250; ++step)
+      advance(std::get<DruckerPrager>(scene.material), setup, p, work, dt);
     REQUIRE(all_finite(p));
     return p;
   };
-  const Particles whole = stepped(scene_text("min = [-0.02, 0.0]\nmax = [0.02, 0.04]\n",
-                                             floor + "points = [[-0.1, 0.0], [0.1, 0.0]]\n"));
+  const Particles whole = stepped(
+      scene_text("min = [-0.02, 0.0]\nmax = [0.02, 0.04]\n", floor + "points = [[-0.1, 0.0], [0.1, 0.0]]\n"));
   const Particles mirrored = stepped(half("symmetry")), walled = stepped(half("free-slip"));
   REQUIRE(mirrored.image_count() > 0);
   std::map<std::pair<long long, long long>, std::size_t> start;
-  const auto key = [](double x, double y) { return std::pair{std::llround(x / 2e-4), std::llround(y / 2e-4)}; };
+  const auto key = [](double x, double y) {
+    return std::pair{std::llround(x / 2e-4), std::llround(y / 2e-4)};
+  };
   for (std::size_t j = 0; j < whole.soil_count; ++j) start[key(whole.x0[j], whole.y0[j])] = j;
   struct Departure {
     double position = 0.0, velocity = 0.0, stress = 0.0;
@@ -398,9 +405,12 @@ TEST_CASE("a half column beside a symmetry line moves as the same half of the wh
     Departure worst;
     for (std::size_t i = 0; i < half_run.soil_count; ++i) {
       const std::size_t j = start.at(key(half_run.x0[i], half_run.y0[i]));
-      worst.position = std::max(worst.position, std::hypot(half_run.x[i] - whole.x[j], half_run.y[i] - whole.y[j]));
-      worst.velocity = std::max(worst.velocity, std::hypot(half_run.vx[i] - whole.vx[j], half_run.vy[i] - whole.vy[j]));
-      worst.stress = std::max(worst.stress, (half_run.state[i].stress - whole.state[j].stress).cwiseAbs().maxCoeff());
+      worst.position =
+          std::max(worst.position, std::hypot(half_run.x[i] - whole.x[j], half_run.y[i] - whole.y[j]));
+      worst.velocity =
+          std::max(worst.velocity, std::hypot(half_run.vx[i] - whole.vx[j], half_run.vy[i] - whole.vy[j]));
+      worst.stress =
+          std::max(worst.stress, (half_run.state[i].stress - whole.state[j].stress).cwiseAbs().maxCoeff());
     }
     return worst;
   };
@@ -412,9 +422,10 @@ TEST_CASE("a half column beside a symmetry line moves as the same half of the wh
   }
   const Departure images = departure(mirrored), ghosts = departure(walled);
   INFO("largest displacement " << largest << " m, speed " << fastest << " m/s, stress " << largest_stress
-                               << " Pa; the half's largest departures from the whole, with images: " << images.position
-                               << " m, " << images.velocity << " m/s, " << images.stress << " Pa; with ghosts: "
-                               << ghosts.position << " m, " << ghosts.velocity << " m/s, " << ghosts.stress << " Pa");
+                               << " Pa; the half's largest departures from the whole, with images: "
+                               << images.position << " m, " << images.velocity << " m/s, " << images.stress
+                               << " Pa; with ghosts: " << ghosts.position << " m, " << ghosts.velocity
+                               << " m/s, " << ghosts.stress << " Pa");
   REQUIRE(largest > 1e-4);
   CHECK(images.position < 1e-10 * largest);
   CHECK(images.velocity < 1e-10 * fastest);
