@@ -34,7 +34,7 @@ def soilsph_energy(run):
     with h5py.File(run / "frames.h5") as f:
         y = f["frame_000000/position"][:, 1]
     # The floor's surface lies half a spacing below the first row (docs/reference/scenes.md).
-    ep0 = float(np.sum(rho * dp**3 * g * (y + 0.5 * dp)))
+    ep0 = float(np.sum(rho * dp**3 * g * (y - (y.min() - 0.5 * dp))))
     history = rows(run / "energy.csv")
     t = np.array([float(r["time_s"]) for r in history])
     kinetic = np.array([float(r["kinetic_J"]) for r in history]) / ep0

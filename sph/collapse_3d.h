@@ -54,11 +54,13 @@ class Collapse3 {
   }
 
   /// The axisymmetric column's deposit now: runout radius from the axis (mean and spread over
-  /// sectors of about 10°) and height on the axis.
+  /// sectors of about 10°, and where the deposit is a tenth of the soil's initial height thick, as
+  /// the 2D column's runout_thick_m) and height on the axis.
   AxisymmetricDeposit axisymmetric_deposit() const {
     const Geometry3& g = scene_.geometry;
-    return measure_axisymmetric_deposit(soil_positions(), g.deposit_axis, g.particle_spacing, g.azimuth_span_deg,
-                                        default_sectors(g.azimuth_span_deg));
+    return measure_axisymmetric_deposit(soil_positions(), g.deposit_axis, g.particle_spacing,
+                                        g.azimuth_span_deg, default_sectors(g.azimuth_span_deg),
+                                        0.1 * (g.surface_level - g.floor_level));
   }
   /// The slab's deposit: the 2D column's measures (runout, height, repose angle, runout where the
   /// deposit is H0/10 thick) of the particles seen along z, the fixed wall at x = W.

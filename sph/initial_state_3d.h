@@ -28,8 +28,8 @@ WallMotionsOf<3> wall_motions(const Scene3& scene);
 Mat3 geostatic_stress_3d(const Geometry3& g, double density, double k0, double surface, double height);
 
 /// Every soil particle's stress and hardening state below the flat free surface
-/// Geometry3::surface_level (H0 + Δp/2), as set_geostatic_state does in 2D (MCC's p_c likewise);
-/// the stress copied into sxx, syy, szz, sxy, sxz, syz. Throws ParameterError if a particle's
+/// Geometry3::surface_level (the column's H0, the slab's H0 + Δp/2), as set_geostatic_state does in 2D (MCC's
+/// p_c likewise); the stress copied into sxx, syy, szz, sxy, sxz, syz. Throws ParameterError if a particle's
 /// stress lies outside the yield surface.
 void set_geostatic_state_3d(ParticlesOf<3>& particles, const Scene3& scene);
 

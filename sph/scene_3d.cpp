@@ -96,16 +96,11 @@ Box3 domain_around(const Geometry3& g, double x_lo, double x_hi, double z_lo, do
 
 namespace {
 
-/// particle_spacing, smoothing_ratio, end_time and boundary_layers, and the levels they set: the
-/// first row at y = 0, the floor surface half a spacing below it and the free surface half a
-/// spacing above the top row, as in the 2D column.
+/// particle_spacing, smoothing_ratio, end_time and boundary_layers.
 void read_resolution_3d(const TableReader& t, Geometry3& g, double width) {
   const Resolution r = read_resolution(t, Range::open(0.0, std::min(width, g.column_height) / 4));
   g.particle_spacing = r.particle_spacing, g.smoothing_ratio = r.smoothing_ratio, g.end_time = r.end_time;
   g.boundary_layers = read_boundary_layers(t, g.smoothing_ratio);
-  g.floor_level = -0.5 * g.particle_spacing;
-  g.base_level = 0.0;
-  g.surface_level = g.column_height + 0.5 * g.particle_spacing;
 }
 
 /// column_radius, column_height, symmetry, floor_radius: the cylinder on its floor, with its
@@ -129,9 +124,16 @@ void read_axisymmetric_column(const TableReader& t, const std::string& source, G
   g.azimuth_span_deg = g.symmetry == ColumnSymmetry::Quarter ? 90.0
                        : g.symmetry == ColumnSymmetry::Half  ? 180.0
                                                              : 360.0;
-  g.regions = {{.shape = ColumnCylinder{g.column_radius, g.column_height, g.symmetry}, .material = "", .name = "[scene] column"}};
-  // Nodes ((i + ½)Δp, jΔp, (k + ½)Δp): none on the symmetry planes, each mirrored by a ghost.
-  g.lattice = Lattice3{{0.5 * dx, 0.0, 0.5 * dx}, dx};
+  // The soil is the cylinder r0 × H0 standing on the floor y = 0, filled with whole cells: nodes
+  // ((i + ½)Δp, (j + ½)Δp, (k + ½)Δp), none on a symmetry plane, the free surface H0 a half
+  // spacing above the top row. Lube et al.'s a = H0/r0 is then the soil's own aspect ratio (nodes at
+  // jΔp from a floor Δp/2 below the first row would make the soil H0 + Δp tall).
+  g.floor_level = 0.0;
+  g.base_level = 0.5 * dx;
+  g.surface_level = g.column_height;
+  const ColumnCylinder cells{.radius = g.column_radius, .height = g.column_height, .symmetry = g.symmetry};
+  g.regions = {{.shape = cells, .material = "", .name = "[scene] column"}};
+  g.lattice = Lattice3{{0.5 * dx, 0.5 * dx, 0.5 * dx}, dx};
   g.deposit_axis = {.point = {0.0, g.floor_level, 0.0},
                     .up = kUp,
                     .azimuth_zero = {1.0, 0.0, 0.0},
@@ -140,7 +142,8 @@ void read_axisymmetric_column(const TableReader& t, const std::string& source, G
   const double R = g.floor_radius, y = g.floor_level;
   const double x_lo = g.symmetry == ColumnSymmetry::Quarter ? 0.0 : -R;
   const double z_lo = g.symmetry == ColumnSymmetry::None ? -R : 0.0;
-  const double top = g.column_height + 2.0 * g.smoothing_length() + 0.5 * dx;  // as the 2D column's walls
+  const double top =
+      g.column_height + 2.0 * g.smoothing_length();  // 2h above the soil, as the 2D column's walls
   g.walls.push_back(
       wall({x_lo, y, z_lo}, {0.0, 0.0, R - z_lo}, {R - x_lo, 0.0, 0.0}, WallKind::NoSlip, "floor", source));
   if (g.symmetry == ColumnSymmetry::Quarter)
@@ -159,6 +162,11 @@ void read_slab(const TableReader& t, const std::string& source, Geometry3& g) {
   g.slab_thickness = t.number("slab_thickness", Range::positive(), "m");
   read_resolution_3d(t, g, g.column_width);
   const double dx = g.particle_spacing;
+  // The 2D column's levels: the first row at y = 0, the floor surface half a spacing below it, the
+  // free surface half a spacing above the top row (the paper's layout, geometry/column.h).
+  g.floor_level = -0.5 * dx;
+  g.base_level = 0.0;
+  g.surface_level = g.column_height + 0.5 * dx;
   check_spacing_divides_column(t, g.column_width, g.column_height, dx);
   require_whole_spacings(t, "slab_thickness", g.slab_thickness, dx);
   const ColumnRelease release = read_column_release(t, g.column_width);

@@ -69,7 +69,7 @@ struct Geometry3 {
   // What they build.
   /// The soil: the shorthand's one region (its cylinder or extruded column), or the [[regions]].
   std::vector<SoilRegion3> regions;
-  Lattice3 lattice;  ///< soil and ghost nodes (axisymmetric: origin (Δp/2, 0, Δp/2); slab: (0, 0, Δp/2);
+  Lattice3 lattice;  ///< soil and ghost nodes (axisymmetric: origin (Δp/2, Δp/2, Δp/2); slab: (0, 0, Δp/2);
                      ///< regions: [scene] lattice_origin, default (Δp/2, Δp/2, Δp/2))
   std::vector<Wall3> walls;  ///< every wall present at t = 0, the shape's then the [[boundaries]] (a wall
                              ///< withdrawn at t = 0 is never built)
@@ -79,10 +79,12 @@ struct Geometry3 {
   std::vector<Wall3> withdrawn_walls;
   Box3 domain;               ///< no soil particle may leave it: the floor's extent, ghosts and kernel support
                              ///< around it, up to twice the soil's height above the floor
-  double floor_level;        ///< the floor surface's height y (m), −Δp/2: the potential-energy datum
-                             ///< (regions: [scene] floor_level)
-  double surface_level;      ///< the geostatic free surface: H0 + Δp/2 (m) (regions: their top)
-  double base_level;         ///< the lowest soil particle: 0 (m) (regions: the lowest soil row)
+  double floor_level;        ///< the floor surface's height y (m): the potential-energy datum; the
+                             ///< column's 0, the slab's −Δp/2 (regions: [scene] floor_level)
+  double surface_level;      ///< the geostatic free surface (m): the column's H0, the slab's
+                             ///< H0 + Δp/2 (regions: their top)
+  double base_level;         ///< the lowest soil row (m): the column's Δp/2, the slab's 0 (regions:
+                             ///< the lowest soil row)
   DepositAxis deposit_axis;  ///< the column's axis on the floor (the slab: the fixed wall's foot, up y;
                              ///< regions: [deposit] axis)
   double azimuth_span_deg;   ///< 90, 180 or 360 (the slab: 0, no azimuths; regions: [deposit] azimuth_span)

@@ -128,13 +128,17 @@ struct TimedRun {
 };
 
 /// The deposit columns of a 3D run: the slab's 2D measures; the axisymmetric column's (and a regions
-/// scene's with [deposit]) runout radius and height on the axis as runout and height (no repose angle).
+/// scene's with [deposit]) runout radius, height on the axis and runout radius where a tenth of the
+/// initial height thick as runout, height and thick runout (no repose angle).
 sph::DepositMetrics deposit_of(const sph::Scene3& scene, const sph::Collapse3& collapse) {
   if (scene.geometry.shape == sph::Geometry3::Shape::Slab) return collapse.slab_deposit();
   const double none = std::numeric_limits<double>::quiet_NaN();
   if (!scene.geometry.deposit_measured) return {.runout_m = none, .height_m = none, .repose_angle_deg = none, .runout_thick_m = none};
   const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
-  return {.runout_m = d.runout_radius_m, .height_m = d.height_m, .repose_angle_deg = none, .runout_thick_m = none};
+  return {.runout_m = d.runout_radius_m,
+          .height_m = d.height_m,
+          .repose_angle_deg = none,
+          .runout_thick_m = d.runout_radius_thick_m};
 }
 
 TimedRun run_variant(const BenchScene& s, const Variant& v, int cores) {

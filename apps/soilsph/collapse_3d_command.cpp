@@ -100,6 +100,7 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
         .add("azimuth_span_deg", g.azimuth_span_deg)
         .add("runout_radius_m", d.runout_radius_m)
         .add("runout_radius_spread_m", d.runout_radius_spread_m)
+        .add("runout_radius_thick_m", d.runout_radius_thick_m)
         .add("height_m", d.height_m)
         .add("sector_runout_m", d.sector_runout_m)
         .add("lube2004_runout_radius_m", r0 * (1.0 + sph::lube2004::runout_ratio(a)))
@@ -116,10 +117,12 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
     j.add("azimuth_span_deg", g.azimuth_span_deg)
         .add("runout_radius_m", d.runout_radius_m)
         .add("runout_radius_spread_m", d.runout_radius_spread_m)
+        .add("runout_radius_thick_m", d.runout_radius_thick_m)
         .add("height_m", d.height_m)
         .add("sector_runout_m", d.sector_runout_m);
   } else {  // regions without [deposit]: no frame to measure from
-    for (const char* key : {"azimuth_span_deg", "runout_radius_m", "runout_radius_spread_m", "height_m", "sector_runout_m"})
+    for (const char* key : {"azimuth_span_deg", "runout_radius_m", "runout_radius_spread_m",
+                            "runout_radius_thick_m", "height_m", "sector_runout_m"})
       j.raw(key, "null");
   }
   if (const std::string initial_stress =
@@ -138,8 +141,9 @@ void report(const sph::Scene3& scene, const sph::Collapse3& collapse, const sph:
     std::cout << "deposit (runout radius, height) undefined: add a [deposit] table (axis = [x, z])";
   } else if (g.shape != sph::Geometry3::Shape::Slab) {
     const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
-    std::cout << "runout radius " << d.runout_radius_m << " m (spread over azimuths " << d.runout_radius_spread_m
-              << " m), height on the axis " << d.height_m << " m";
+    std::cout << "runout radius " << d.runout_radius_m << " m (spread over azimuths "
+              << d.runout_radius_spread_m << " m; " << d.runout_radius_thick_m
+              << " m where a tenth of the initial height thick), height on the axis " << d.height_m << " m";
   } else {
     const sph::DepositMetrics d = collapse.slab_deposit();
     std::cout << "runout " << d.runout_m << " m, height " << d.height_m << " m, repose angle " << d.repose_angle_deg

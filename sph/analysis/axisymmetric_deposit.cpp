@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <map>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 #include "sph/analysis/deposit.h"
 
@@ -21,7 +24,8 @@ double last_linked(const std::vector<double>& sorted, double gap) {
 }  // namespace
 
 AxisymmetricDeposit measure_axisymmetric_deposit(std::span<const Vec3> soil, const DepositAxis& axis,
-                                                 double dx, double span_deg, int sectors) {
+                                                 double dx, double span_deg, int sectors,
+                                                 double toe_thickness) {
   if (soil.empty()) throw std::invalid_argument("axisymmetric deposit: no particle");
   if (!(dx > 0.0)) throw std::invalid_argument("axisymmetric deposit: the spacing must be positive");
   if (!(span_deg > 0.0 && span_deg <= 360.0))
@@ -29,20 +33,23 @@ AxisymmetricDeposit measure_axisymmetric_deposit(std::span<const Vec3> soil, con
   if (sectors < 1) throw std::invalid_argument("axisymmetric deposit: at least one sector");
   const double link = deposit_link_spacings * dx, span = span_deg * std::numbers::pi / 180.0;
   std::vector<std::vector<double>> radii(static_cast<std::size_t>(sectors));
+  // Per sector, the top particle of each radial strip of width dx: strip → (height, radius).
+  std::vector<std::map<long long, std::pair<double, double>>> strip_tops(static_cast<std::size_t>(sectors));
   std::vector<double> axis_heights;
   for (const Vec3& p : soil) {
     const Vec3 d = p - axis.point;
     const double height = dot(d, axis.up), x = dot(d, axis.azimuth_zero), y = dot(d, axis.azimuth_quarter);
     const double radius = std::hypot(x, y);
     if (radius <= 2.0 * dx) axis_heights.push_back(height);
-    if (height > dx) continue;
     double azimuth = std::atan2(y, x);
     if (azimuth < 0.0) azimuth += 2.0 * std::numbers::pi;
     // A particle on the axis, or at an azimuth the span leaves out (beyond a symmetry plane by
     // round-off), goes to the nearest sector.
     if (azimuth > span) azimuth = azimuth - span < 2.0 * std::numbers::pi - azimuth ? span : 0.0;
     const auto sector = std::min(static_cast<std::size_t>(azimuth / span * sectors), radii.size() - 1);
-    radii[sector].push_back(radius);
+    const auto [top, fresh] = strip_tops[sector].try_emplace(std::llround(radius / dx), height, radius);
+    if (!fresh && height > top->second.first) top->second = {height, radius};
+    if (height <= bottom_layer_spacings * dx) radii[sector].push_back(radius);
   }
   AxisymmetricDeposit deposit{};
   for (std::vector<double>& r : radii) {
@@ -58,9 +65,21 @@ AxisymmetricDeposit measure_axisymmetric_deposit(std::span<const Vec3> soil, con
   for (const double r : deposit.sector_runout_m) sum += r;
   deposit.runout_radius_m = sum / sectors;
   deposit.runout_radius_spread_m = *high - *low;
+  deposit.runout_radius_thick_m = std::numeric_limits<double>::quiet_NaN();
+  if (toe_thickness > 0.0) {
+    double thick = 0.0;
+    for (const auto& tops : strip_tops) {
+      // From the outermost strip inwards, the first whose cell top reaches the toe thickness.
+      const auto reached = std::find_if(tops.rbegin(), tops.rend(), [&](const auto& strip) {
+        return strip.second.first + 0.5 * dx >= toe_thickness;
+      });
+      thick += reached == tops.rend() ? 0.0 : reached->second.second;
+    }
+    deposit.runout_radius_thick_m = thick / sectors;
+  }
   std::sort(axis_heights.begin(), axis_heights.end());
   deposit.height_m =
-      axis_heights.empty() || axis_heights.front() > link ? 0.0 : last_linked(axis_heights, link);
+      axis_heights.empty() || axis_heights.front() > link ? 0.0 : last_linked(axis_heights, link) + 0.5 * dx;
   return deposit;
 }
 

@@ -34,7 +34,8 @@ double estimated_particles(const SoilRegion3& region, double spacing) {
       Overloaded{
           [&](const SoilBox& b) { return box_volume(b.box) / cell; },
           [&](const ColumnCylinder& c) {
-            return std::numbers::pi * c.radius * c.radius * c.share() * (c.height + spacing) / cell;
+            return std::numbers::pi * c.radius * c.radius * c.share() * c.height /
+                   cell;  // whole cells fill it
           },
           [&](const Extrusion& e) { return std::abs(signed_area(e.outline)) * (e.z_max - e.z_min) / cell; },
           [&](const StlSolid& s) { return s.volume() / cell; },

@@ -87,9 +87,10 @@ TEST_CASE("the shipped axisymmetric column reads with its documented defaults", 
   CHECK(g.floor_radius == Approx(0.1 * (1.0 + 2.0 * 1.24) + 4 * 0.005).epsilon(1e-12));
   CHECK(g.gravity == Vec3{0.0, -9.81, 0.0});
   CHECK(g.boundary_layers == 3);  // ⌈2 h/Δp⌉ = ⌈2.6⌉
-  CHECK(g.floor_level == -0.0025);
-  CHECK(g.surface_level == Approx(0.1025).epsilon(1e-14));
-  CHECK(g.deposit_axis.point == Vec3{0.0, -0.0025, 0.0});
+  // The soil fills the cylinder r0 × H0 on the floor y = 0: the free surface at H0.
+  CHECK(g.floor_level == 0.0);
+  CHECK(g.surface_level == 0.1);
+  CHECK(g.deposit_axis.point == Vec3{0.0, 0.0, 0.0});
   CHECK(g.deposit_axis.up == Vec3{0.0, 1.0, 0.0});
   REQUIRE(g.walls.size() == 3);
   CHECK(g.walls[0].label == "floor");
@@ -103,7 +104,7 @@ TEST_CASE("the shipped axisymmetric column reads with its documented defaults", 
   CHECK(g.domain.lo.x < -3 * 0.005);
   CHECK(g.domain.hi.x > g.floor_radius + 3 * 0.005);
   CHECK(g.domain.lo.y < g.floor_level - 3 * 0.005);
-  CHECK(g.domain.hi.y >= g.floor_level + 2.0 * (0.1 + 0.005));
+  CHECK(g.domain.hi.y >= g.floor_level + 2.0 * 0.1);
 }
 
 TEST_CASE("a 3D scene without gravity or symmetry keys takes (0, -9.81, 0) and the quarter", "[scene3d]") {
@@ -208,7 +209,8 @@ TEST_CASE("a 3D scene takes --set overrides, and its resolved scene reads back t
 
 TEST_CASE("the axisymmetric column holds the lattice nodes of its cylinder, each of mass rho dx^3",
           "[scene3d]") {
-  const int radius = 10, rows = 10 + 1;  // r0/Δp, H0/Δp + 1 (first row at y = 0, last at H0)
+  // r0/Δp and H0/Δp: whole cells fill the cylinder on the floor y = 0, rows at (j + ½)Δp up to H0.
+  const int radius = 10, rows = 10;
   const double dx = 0.004, rho = 2600.0;
   struct Expect {
     std::string symmetry;
@@ -228,6 +230,8 @@ TEST_CASE("the axisymmetric column holds the lattice nodes of its cylinder, each
       CHECK(mass == Approx(rho * static_cast<double>(count) * dx * dx * dx).epsilon(1e-12));
       for (std::size_t i = 0; i < p.soil_count; ++i) {
         CHECK(std::hypot(p.x[i], p.z[i]) <= 0.04 * (1 + 1e-9));
+        CHECK(p.y[i] > 0.0);
+        CHECK(p.y[i] < 0.04);
         CHECK(p.material[i] == 0);
         CHECK(p.x0[i] == p.x[i]);
         CHECK(p.z0[i] == p.z[i]);
@@ -247,7 +251,7 @@ TEST_CASE("the column's ghosts lie behind their walls, never on a soil node, and
   const double dx = g.particle_spacing, depth = g.boundary_layers * dx;
   REQUIRE(p.boundary_count() > 0);
   const auto cell = [&](double x, double y, double z) {
-    return std::tuple{std::llround(x / dx - 0.5), std::llround(y / dx), std::llround(z / dx - 0.5)};
+    return std::tuple{std::llround(x / dx - 0.5), std::llround(y / dx - 0.5), std::llround(z / dx - 0.5)};
   };
   std::set<std::tuple<long long, long long, long long>> soil, ghosts;
   for (std::size_t i = 0; i < p.soil_count; ++i) soil.insert(cell(p.x[i], p.y[i], p.z[i]));
@@ -316,7 +320,7 @@ TEST_CASE("the geostatic state of a 3D column is the K0 closed form below its to
   const Scene3 s = parse_scene_3d(kSmallColumn, "small.toml");
   ParticlesOf<3> p = build_particles_3d(s);
   set_geostatic_state_3d(p, s);
-  const double rho = 2600.0, g = 9.81, k0 = 0.5, top = 0.04 + 0.002;  // H0 + Δp/2
+  const double rho = 2600.0, g = 9.81, k0 = 0.5, top = 0.04;  // H0: the cells fill the cylinder
   for (std::size_t i = 0; i < p.soil_count; ++i) {
     const double vertical = -rho * g * (top - p.y[i]);
     const Mat3& sigma = p.state[i].stress;
@@ -333,8 +337,9 @@ TEST_CASE("the geostatic state of a 3D column is the K0 closed form below its to
     CHECK(p.sxz[i] == 0.0);
     CHECK(p.syz[i] == 0.0);
   }
-  // p at the base: ρ g (H0 + Δp/2)(1 + 2 K0)/3.
-  CHECK(largest_initial_pressure(s) == Approx(rho * g * top * (1.0 + 2.0 * k0) / 3.0).epsilon(1e-13));
+  // p at the lowest row, half a spacing above the floor: ρ g (H0 − Δp/2)(1 + 2 K0)/3.
+  CHECK(largest_initial_pressure(s) ==
+        Approx(rho * g * (top - 0.002) * (1.0 + 2.0 * k0) / 3.0).epsilon(1e-13));
 }
 
 TEST_CASE("a 3D column of Cam-clay starts on its yield surface's p_c, as in 2D", "[scene3d]") {
