@@ -85,6 +85,14 @@ with tempfile.TemporaryDirectory() as temp:
     collapsed = check_agrees("two-material-column", QUICK[:4], QUICK[4:])
     check_agrees("axisymmetric-column", ["--set", "scene.particle_spacing=0.01", "--set", "scene.end_time=0.04"],
                  ["--threads", "1"])
+    # At 0.04 s the column (r0 = H0 = 0.1 m, Δp = 1 cm) has barely moved: its top cell reads H0 within
+    # half a spacing (its top centre lies half a spacing lower), and the radius where it is H0/10
+    # thick lies near r0, inside the runout radius plus a strip.
+    column = json.loads((temp / "axisymmetric-column" / "summary.json").read_text())
+    thick, runout = column.get("runout_radius_thick_m"), column.get("runout_radius_m")
+    expect(isinstance(thick, float) and 0.08 < thick <= runout + 0.01,
+           f"axisymmetric-column: runout_radius_thick_m {thick!r} against runout_radius_m {runout!r}")
+    expect(abs(column["height_m"] - 0.1) < 0.005, f"axisymmetric-column: height_m {column['height_m']!r}, not H0")
     # The shorthand's own symmetry planes close its quarter's cuts: no warning.
     quarter = run(["check", str(scenes / "axisymmetric-column.toml"), "--set", "scene.particle_spacing=0.01"], temp)
     expect("warning" not in quarter.stderr, f"check axisymmetric-column warns: {quarter.stderr!r}")
