@@ -73,6 +73,13 @@ inline constexpr const char* kBlowUpHint =
     " (a smaller [numerics] cfl, a stiffer material or more artificial viscosity usually helps; "
     "docs/method/sph.md)";
 
+/// The keys that lengthen the floor a particle ran off: the 2D column's, and in 3D each shape's.
+template <int dim>
+inline constexpr const char* kLongerFloorHint =
+    dim == 2 ? " (a soil that runs past the floor's far end needs a longer [scene] floor_length)"
+             : " (a soil that runs past the floor's far end needs a longer floor: [scene] floor_radius for "
+               "the axisymmetric column, floor_length for the slab, floor_margin for regions)";
+
 /// True if particle i's close-of-step state is sane: speed² v2 at most c², density finite and
 /// positive, inside the domain. NaN fails every comparison, so a non-finite value is never sane.
 template <int dim>
@@ -94,8 +101,7 @@ std::string particle_blow_up(const ParticlesOf<dim>& p, std::size_t i, double so
   else if (fast)
     out << " moves at " << std::sqrt(v2) << " m/s, faster than the P-wave speed c = " << sound_speed << " m/s";
   else if (outside)
-    out << " left the domain " << domain_text(domain)
-        << " (a soil that runs past the floor's far end needs a longer [scene] floor_length)";
+    out << " left the domain " << domain_text(domain) << kLongerFloorHint<dim>;
   else
     out << " has density " << p.density[i] << " kg/m^3";
   return out.str() + kBlowUpHint;

@@ -14,6 +14,7 @@
 
 #include "sph/initial_state.h"
 #include "../common/material_toml.h"
+#include "sph/blow_up.h"
 #include "sph/initial_state_3d.h"
 #include "sph/scene_3d.h"
 
@@ -424,4 +425,17 @@ TEST_CASE("a 3D checkpoint's ghosts get their walls' normals, friction and ids f
   CHECK(with_images.image_begin == built.size());
   CHECK(with_images.image_count() == 7);
   CHECK(std::equal(built.wall_id.begin(), built.wall_id.end(), with_images.wall_id.begin()));
+}
+
+TEST_CASE("a soil particle off the floor's far end is named with the keys that lengthen each floor",
+          "[scene3d][blow-up]") {
+  ParticlesOf<3> p;
+  p.resize(1, 0);
+  p.x[0] = 0.6, p.y[0] = 0.05, p.z[0] = 0.05, p.density[0] = 2600.0;
+  const Box3 domain{{-0.01, -0.01, -0.01}, {0.5, 0.4, 0.5}};
+  REQUIRE(!particle_sane(p, 0, 0.0, 1.0, domain));
+  const std::string message = particle_blow_up(p, 0, 1.0, domain);
+  using Catch::Matchers::Contains;
+  CHECK_THAT(message, Contains("left the domain") && Contains("floor_radius") && Contains("floor_length") &&
+                          Contains("floor_margin"));
 }
