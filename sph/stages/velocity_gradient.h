@@ -141,6 +141,7 @@ KinematicRatesOf<dim> kinematic_rates_summed(const ParticlesOf<dim>& p, const Pa
   }
   return {L, rate};
 }
+/// kinematic_rates_summed with the density diffusion chosen once per particle from `options`.
 template <int dim, class Volume>
 KinematicRatesOf<dim> kinematic_rates_with(const ParticlesOf<dim>& p, const PairList<dim>& nl, std::size_t i,
                                            const VelocitySpans<dim>& v, Volume&& volume_of,
