@@ -347,8 +347,8 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
   for (int a = 0; a < dim; ++a) std::swap(*position[a], next.position[a]);
   setup.walls.advance(p, work.time, dt);
   work.time += dt;
-  const std::size_t pushed = setup.guard.apply(p, work.time);
-  work.health.guard_corrections += pushed;
+  const GuardPushes pushed = setup.guard.apply(p, work.time);
+  work.health.guard_corrections += pushed.count;
   work.images.place(p);  // where the soil is now, the wall guard's corrections included
   work.previous_dt = dt;
   const SoilTotals totals = soil_totals(setup, p, work.sound_speed);
@@ -363,9 +363,13 @@ void close_step(const MaterialGroups& groups, const SolverSetupOf<dim>& setup, P
                      " exceeds all the energy the soil held at the start, " +
                      std::to_string(health.energy_budget) + unit + " (potential, elastic, kinetic); " +
                      fastest_particle(p, totals.fastest) + kBlowUpHint;
-  } else if (pushed > std::max<std::size_t>(10, p.soil_count / 100)) {
-    health.blow_up = "blow-up: the wall guard pushed " + std::to_string(pushed) +
-                     " soil particles back through a wall in one step" + kBlowUpHint;
+  } else if (pushed.count > std::max<std::size_t>(10, p.soil_count / 100)) {
+    health.blow_up = "blow-up: the wall guard pushed " + std::to_string(pushed.count) +
+                     " soil particles back through a wall in one step" +
+                     (pushed.past_edge > 0 ? ", " + std::to_string(pushed.past_edge) +
+                                                 " of them past its edge" + kLongerFloorHint<dim>
+                                           : std::string()) +
+                     kBlowUpHint;
   }
   if (!health.blow_up.empty()) return;  // a search on such positions would fail or exhaust memory
   work.pairs.search_next = work.pairs.neighbours.search_needed(p.coordinates());
@@ -633,6 +637,9 @@ struct RunControlOf {
   std::function<void(const StepSampleOf<dim>&)> on_sample;
   double sample_interval = 0.0;
   double first_sample = 0.0;
+  /// Called once (serially) when a step fails, before the error is rethrown, with the statistics
+  /// up to the last step that closed: what a summary of the failed run reports.
+  std::function<void(const RunStatistics&)> on_failure;
 };
 using RunControl = RunControlOf<2>;
 
@@ -674,7 +681,10 @@ class TimeLoop {
   RunStatistics run(ThreadTuner& tuner) {
     start();
     while (!stop_) run_chunk(tuner);
-    if (error_) std::rethrow_exception(error_);
+    if (error_) {
+      if (control_.on_failure) control_.on_failure(statistics_now());
+      std::rethrow_exception(error_);
+    }
     stats_ = statistics_now();
     stats_.workspace_bytes =
         work_.pairs.neighbours.bytes() +

@@ -180,10 +180,13 @@ void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const f
   const StopSignal signal;
   sph::RunControlOf<3> control = run_control<3>(files, signal, resumed);
   add_histories<3>(control, histories, dir, scene, resumed);
-  record.stats = run_with_frames(collapse, scene, tuner, files, control, [&](const std::string& why) {
-    record.stop_reason = why;
-    write_summary();
-  });
+  record.stats =
+      run_with_frames(collapse, scene, tuner, files, control,
+                      [&](const std::string& why, const std::optional<sph::RunStatistics>& reached) {
+                        if (reached) record.stats = *reached;
+                        record.stop_reason = why;
+                        write_summary();
+                      });
   record.complete = record.stats.stop != sph::StopReason::Request;
   record.stop_reason = stop_reason(record.stats, signal);
   write_summary();

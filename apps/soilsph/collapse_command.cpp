@@ -94,27 +94,33 @@ sph::Summary describe(const sph::Scene& scene, const sph::Collapse& collapse, in
   return s;
 }
 
-/// Adds what a run that stopped reports: statistics, deposit, end state.
-void add_results(sph::Summary& s, const sph::RunStatistics& stats, const sph::Collapse& collapse) {
-  const sph::Particles& p = collapse.particles();
-  const sph::DepositMetrics deposit = collapse.deposit();
+/// Adds the time loop's statistics: all a failed run can report (its particles may lie anywhere).
+void add_statistics(sph::Summary& s, const sph::RunStatistics& stats, std::size_t soil_count) {
   s.steps = stats.steps;
   s.end_time = stats.end_time;
   s.wall_seconds = stats.wall_seconds;
   s.particle_steps_per_second =
-      stats.wall_seconds > 0 ? static_cast<double>(p.soil_count) * static_cast<double>(stats.steps) / stats.wall_seconds
-                             : 0.0;
+      stats.wall_seconds > 0
+          ? static_cast<double>(soil_count) * static_cast<double>(stats.steps) / stats.wall_seconds
+          : 0.0;
+  s.smallest_time_step = stats.smallest_time_step;
+  s.largest_time_step = stats.largest_time_step;
+  s.stopped_at_rest = stats.stopped_at_rest;
+  s.guard_corrections = stats.guard_corrections;
+  s.fallback_stress_updates = stats.fallback_stress_updates;
+}
+
+/// Adds what a run that stopped reports: statistics, deposit, end state.
+void add_results(sph::Summary& s, const sph::RunStatistics& stats, const sph::Collapse& collapse) {
+  const sph::Particles& p = collapse.particles();
+  const sph::DepositMetrics deposit = collapse.deposit();
+  add_statistics(s, stats, p.soil_count);
   s.runout_m = deposit.runout_m;
   s.height_m = deposit.height_m;
   s.repose_angle_deg = deposit.repose_angle_deg;
   s.runout_thick_m = deposit.runout_thick_m;
   s.max_speed_end = sph::max_speed(p);
   s.kinetic_energy_end = sph::kinetic_energy(p);
-  s.smallest_time_step = stats.smallest_time_step;
-  s.largest_time_step = stats.largest_time_step;
-  s.stopped_at_rest = stats.stopped_at_rest;
-  s.guard_corrections = stats.guard_corrections;
-  s.fallback_stress_updates = stats.fallback_stress_updates;
 }
 
 /// SCENE starts a run, --resume DIR continues one: exactly one of them.
@@ -265,10 +271,12 @@ void run_collapse(const CollapseOptions& o) {
   sph::RunControl control = run_control<2>(files, signal, resumed);
   add_histories<2>(control, histories, dir, scene, resumed);
   const sph::RunStatistics stats =
-      run_with_frames(collapse, scene, tuner, files, control, [&](const std::string& why) {
-        summary.stop_reason = why;
-        sph::write_summary_json(dir / "summary.json", summary);
-      });
+      run_with_frames(collapse, scene, tuner, files, control,
+                      [&](const std::string& why, const std::optional<sph::RunStatistics>& reached) {
+                        if (reached) add_statistics(summary, *reached, collapse.particles().soil_count);
+                        summary.stop_reason = why;
+                        sph::write_summary_json(dir / "summary.json", summary);
+                      });
   record_end(summary, stats, collapse, signal, dir);
   exit_if_stopped_by_signal(stats, signal, dir);
   warn_if_wall_guard_acted(stats, scene);

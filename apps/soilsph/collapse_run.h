@@ -103,10 +103,13 @@ void add_histories(sph::RunControlOf<dim>& control, std::optional<sph::Histories
 }
 
 /// Runs the collapse, writing the frames of `scene.output.fields` and progress as it goes; a run that
-/// fails calls record_failure(what) (which writes summary.json) before the error is passed on.
+/// fails calls record_failure(what, reached) (which writes summary.json) before the error is passed
+/// on, `reached` holding the statistics up to the last good step (none if it failed before the first).
 template <class Collapse, class Scene, class Control, class RecordFailure>
 sph::RunStatistics run_with_frames(Collapse& collapse, const Scene& scene, const sph::ThreadTuner& tuner,
-                                   RunFiles& files, const Control& control, RecordFailure&& record_failure) {
+                                   RunFiles& files, Control control, RecordFailure&& record_failure) {
+  std::optional<sph::RunStatistics> reached;
+  control.on_failure = [&reached](const sph::RunStatistics& stats) { reached = stats; };
   sph::FrameBuffers buffers;
   sph::Progress progress(scene.geometry.end_time);
   const int state_variables = sph::frame_state_variables(scene.output, scene.materials);
@@ -120,7 +123,7 @@ sph::RunStatistics run_with_frames(Collapse& collapse, const Scene& scene, const
     return stats;
   } catch (const std::exception& e) {
     progress.finish();
-    record_failure(e.what());
+    record_failure(e.what(), reached);
     throw;
   }
 }

@@ -65,6 +65,7 @@
 #include "sph/geometry/wall_mirror.h"
 #include "sph/neighbours/neighbour_list.h"
 #include "sph/particles.h"
+#include "sph/stages/guard_pushes.h"
 #include "sph/stages/pair_vectors.h"
 #include "sph/stages/velocity_gradient.h"
 #include "sph/stages/wall_motions.h"
@@ -216,10 +217,10 @@ struct WallGuard {
   };
   std::vector<Face> faces;
 
-  /// Returns the number of particles corrected at time t (one put back on the surface may lie an
-  /// ulp behind it: that is not beyond).
-  std::size_t apply(Particles& p, double t) const {
-    std::size_t corrected = 0;
+  /// The particles corrected at time t (one put back on the surface may lie an ulp behind it: that
+  /// is not beyond).
+  GuardPushes apply(Particles& p, double t) const {
+    GuardPushes pushed;
     for (const Face& f : faces) {
       if (t >= f.motion.removed_at) continue;
       const Vec2 shift = f.motion.displacement(t), a = f.a + shift;
@@ -237,10 +238,11 @@ struct WallGuard {
         p.x[i] -= d * n.x, p.y[i] -= d * n.y;
         const double vn = (p.vx[i] - vw.x) * n.x + (p.vy[i] - vw.y) * n.y;
         if (vn < 0.0) p.vx[i] -= vn * n.x, p.vy[i] -= vn * n.y;
-        ++corrected;
+        ++pushed.count;
+        if (s < 0.0 || s > length) ++pushed.past_edge;
       }
     }
-    return corrected;
+    return pushed;
   }
 };
 

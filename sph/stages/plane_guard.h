@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "sph/geometry/planar_wall.h"
+#include "sph/geometry/polygon.h"
 #include "sph/geometry/wall_motion.h"
 #include "sph/particles.h"
+#include "sph/stages/guard_pushes.h"
 
 namespace soilsph::sph {
 
@@ -32,9 +34,9 @@ struct PlaneGuard {
     faces.push_back({wall, depth, lo, hi, motion});
   }
 
-  /// Returns the number of particles corrected at time t.
-  std::size_t apply(ParticlesOf<3>& p, double t) const {
-    std::size_t corrected = 0;
+  /// The particles corrected at time t.
+  GuardPushes apply(ParticlesOf<3>& p, double t) const {
+    GuardPushes pushed;
     for (const Face& f : faces) {
       if (t >= f.motion.removed_at) continue;
       const Vec3 n = f.wall.inward, shift = f.motion.displacement(t), vw = f.motion.velocity_at(t);
@@ -50,10 +52,11 @@ struct PlaneGuard {
         p.x[i] -= d * n.x, p.y[i] -= d * n.y, p.z[i] -= d * n.z;
         const double vn = (p.vx[i] - vw.x) * n.x + (p.vy[i] - vw.y) * n.y + (p.vz[i] - vw.z) * n.z;
         if (vn < 0.0) p.vx[i] -= vn * n.x, p.vy[i] -= vn * n.y, p.vz[i] -= vn * n.z;
-        ++corrected;
+        ++pushed.count;
+        if (!inside_or_on(f.wall.outline, q, 0.0)) ++pushed.past_edge;
       }
     }
-    return corrected;
+    return pushed;
   }
 };
 

@@ -235,6 +235,28 @@ TEST_CASE("a full disk ends the run with one line, and the frames written before
   for (const auto& entry : fs::recursive_directory_iterator(dir)) CHECK(entry.path().extension() != ".tmp");
 }
 
+namespace {
+
+/// The summary of a run that failed at "(step N, t = T s)" in its log reports the N - 1 steps that
+/// closed and the time T they reached, not the starting figures.
+void check_failed_summary(const fs::path& dir, const std::string& log) {
+  const std::size_t at = log.find("(step ");
+  REQUIRE(at != std::string::npos);
+  std::istringstream named(log.substr(at + 6));
+  double failed_step = 0.0, time = 0.0;
+  std::string comma, t, equals;
+  named >> failed_step >> comma >> t >> equals >> time;  // "N, t = T s)"
+  REQUIRE(named);
+  const std::string summary = text_of(dir / "summary.json");
+  CHECK(failed_step > 1.0);
+  CHECK(json_number(summary, "steps") == failed_step - 1.0);
+  CHECK(json_number(summary, "end_time") == Approx(time).margin(5e-7));  // the log prints 6 decimals
+  CHECK(json_number(summary, "wall_seconds") > 0.0);
+  CHECK(json_number(summary, "smallest_time_step") > 0.0);
+}
+
+}  // namespace
+
 TEST_CASE("a blow-up stops the run, naming the particle, quantity, step and time", "[fault][blow-up]") {
   const fs::path dir = fresh("blow-up");
   // Twice the CFL number at which the scheme is still stable (docs/validation/time-step.md).
@@ -244,6 +266,7 @@ TEST_CASE("a blow-up stops the run, naming the particle, quantity, step and time
   CHECK_THAT(r.log, Contains("error: blow-up: ") && Contains("soil particle") && Contains("(step ") &&
                         Contains("[numerics] cfl"));
   CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("blow-up"));
+  check_failed_summary(dir, r.log);
   CHECK_NOTHROW(read_frames(dir));
   CHECK(fs::exists(dir / "checkpoint.h5"));  // the last good checkpoint is kept
 }
@@ -390,6 +413,20 @@ TEST_CASE("3D: SIGTERM stops the run cleanly, and resumed it ends bit for bit as
   REQUIRE(resumed.exit_status == 0);
   REQUIRE(run_child(column_3d(straight, "0.3", often), straight / "log.txt").exit_status == 0);
   check_same_run(dir, straight, 1);
+}
+
+TEST_CASE(
+    "3D: a soil that runs off the floor stops the run naming the floor's key, and the summary "
+    "reports the steps and time it reached",
+    "[fault][blow-up][3d]") {
+  const fs::path dir = fresh("blow-up-3d");
+  // The a = 1 column spreads to about 0.22 m (Lube et al. 2004): a floor of 0.12 m is too short.
+  const auto r = run_child(column_3d(dir, "0.3", {"--set", "scene.floor_radius=0.12"}), dir / "log.txt");
+  INFO(r.log);
+  CHECK(r.exit_status == 1);
+  CHECK_THAT(r.log, Contains("error: blow-up: ") && Contains("floor_radius") && Contains("(step "));
+  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("blow-up"));
+  check_failed_summary(dir, r.log);
 }
 
 TEST_CASE("3D: a 3D checkpoint whose scene says 2D is refused, naming both dimensions", "[fault][resume][3d]") {

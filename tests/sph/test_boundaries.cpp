@@ -84,14 +84,32 @@ TEST_CASE("the wall guard puts back a particle found beyond a wall", "[boundarie
   const WallGuard guard{{{{-0.3, -5e-4}, {0.04, -5e-4}, depth, {}},
                          {{0.04, -5e-4}, {0.04, 0.1}, depth, {}},
                          {{-5e-4, 0.1}, {-5e-4, -5e-4}, depth, {}}}};
-  CHECK(guard.apply(p, 0.0) == 3);
+  const GuardPushes pushed = guard.apply(p, 0.0);
+  CHECK(pushed.count == 3);
+  CHECK(pushed.past_edge == 0);  // each lies along its wall
   CHECK(p.x[0] == Approx(-5e-4));
   CHECK(p.vx[0] == 0.0);
   CHECK(p.y[1] == Approx(-5e-4));
   CHECK(p.vy[1] == 0.0);
   CHECK(p.x[3] == Approx(0.04));
   CHECK(p.vx[3] == 0.0);
-  CHECK(guard.apply(p, 0.0) == 0);
+  CHECK(guard.apply(p, 0.0).count == 0);
+}
+
+TEST_CASE("the wall guard tells a particle put back past a floor's end from one along it", "[boundaries]") {
+  // A floor from x = 0 to 0.1 at y = 0 guarded 6 mm deep: soil that slid off its end and sank 1 mm
+  // is put back on the floor's line (within the guard's reach) and counted as past its edge.
+  Particles p = test::lattice(2, 1.0e-3, 2000.0);
+  p.x[0] = 0.05, p.y[0] = -0.001;   // behind the floor, along it
+  p.x[1] = 0.104, p.y[1] = -0.001;  // behind its line, 4 mm past its end
+  p.x[2] = 0.2, p.y[2] = -0.001;    // beyond the guard's reach
+  p.y[3] = 0.01;
+  const WallGuard guard{{{{0.0, 0.0}, {0.1, 0.0}, 0.006, {}}}};
+  const GuardPushes pushed = guard.apply(p, 0.0);
+  CHECK(pushed.count == 2);
+  CHECK(pushed.past_edge == 1);
+  CHECK(p.y[1] == Approx(0.0).margin(1e-15));
+  CHECK(p.y[2] == -0.001);
 }
 
 namespace {

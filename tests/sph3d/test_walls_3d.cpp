@@ -323,20 +323,36 @@ TEST_CASE("the wall guard of space follows a moving plane and drops a removed on
   // At 0.5 s the floor is at y = 0.25 and rises at 0.5 m/s: a particle 5 mm below it, rising
   // slower, is put back on it with the floor's normal velocity.
   p.y[0] = 0.245, p.vx[0] = 0.1, p.vy[0] = 0.2;
-  CHECK(guard.apply(p, 0.5) == 1);
+  CHECK(guard.apply(p, 0.5).count == 1);
   CHECK(p.y[0] == Approx(0.25));
   CHECK(p.vy[0] == Approx(0.5));
   CHECK(p.vx[0] == 0.1);
   // At 1.5 s it stands at 0.5: one rising away from it keeps its velocity.
   p.y[0] = 0.495, p.vy[0] = 0.2;
-  CHECK(guard.apply(p, 1.5) == 1);
+  CHECK(guard.apply(p, 1.5).count == 1);
   CHECK(p.y[0] == Approx(0.5));
   CHECK(p.vy[0] == 0.2);
   // Where it stood at t = 0 it no longer guards, and once removed not at all.
   p.y[0] = -0.005;
-  CHECK(guard.apply(p, 1.5) == 0);
+  CHECK(guard.apply(p, 1.5).count == 0);
   p.y[0] = 0.495;
-  CHECK(guard.apply(p, 2.0) == 0);
+  CHECK(guard.apply(p, 2.0).count == 0);
+}
+
+TEST_CASE("the wall guard of space tells a particle put back past a floor's edge from one on it",
+          "[walls-3d]") {
+  // The floor y = 0 over the unit square, guarded 1 cm deep: a particle 1 mm below it over the
+  // square, one 1 mm below its plane 5 mm beyond the edge x = 1 (soil that ran off it), one 2 cm
+  // beyond (out of reach).
+  PlaneGuard guard;
+  guard.add(rectangle_wall({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {1.0, 0.0, 0.0}, "floor"), 0.01);
+  ParticlesOf<3> p;
+  p.resize(3, 0);
+  p.x = {0.5, 1.005, 1.02}, p.y = {-0.001, -0.001, -0.001}, p.z = {0.5, 0.5, 0.5};
+  const GuardPushes pushed = guard.apply(p, 0.0);
+  CHECK(pushed.count == 2);
+  CHECK(pushed.past_edge == 1);
+  CHECK(p.y[2] == -0.001);
 }
 
 TEST_CASE(
