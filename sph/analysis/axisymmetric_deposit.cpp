@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -21,6 +22,18 @@ double last_linked(const std::vector<double>& sorted, double gap) {
   while (k + 1 < sorted.size() && std::abs(sorted[k + 1] - sorted[k]) <= gap) ++k;
   return sorted[k];
 }
+
+/// The top (height, radius) of a strip's soil held up from the floor: sorted by height, from the
+/// lowest (within `link` of the floor, else the strip holds only splashed grains and has no top)
+/// up to the first gap wider than `link`. A grain in the air over the strip is not its top.
+std::optional<std::pair<double, double>> linked_top(std::vector<std::pair<double, double>>& strip,
+                                                    double link) {
+  std::sort(strip.begin(), strip.end());
+  if (strip.front().first > link) return std::nullopt;
+  std::size_t k = 0;
+  while (k + 1 < strip.size() && strip[k + 1].first - strip[k].first <= link) ++k;
+  return strip[k];
+}
 }  // namespace
 
 AxisymmetricDeposit measure_axisymmetric_deposit(std::span<const Vec3> soil, const DepositAxis& axis,
@@ -33,8 +46,9 @@ AxisymmetricDeposit measure_axisymmetric_deposit(std::span<const Vec3> soil, con
   if (sectors < 1) throw std::invalid_argument("axisymmetric deposit: at least one sector");
   const double link = deposit_link_spacings * dx, span = span_deg * std::numbers::pi / 180.0;
   std::vector<std::vector<double>> radii(static_cast<std::size_t>(sectors));
-  // Per sector, the top particle of each radial strip of width dx: strip → (height, radius).
-  std::vector<std::map<long long, std::pair<double, double>>> strip_tops(static_cast<std::size_t>(sectors));
+  // Per sector, each radial strip of width dx: strip → its particles' (height, radius).
+  std::vector<std::map<long long, std::vector<std::pair<double, double>>>> strips(
+      static_cast<std::size_t>(sectors));
   std::vector<double> axis_heights;
   for (const Vec3& p : soil) {
     const Vec3 d = p - axis.point;
@@ -47,8 +61,7 @@ AxisymmetricDeposit measure_axisymmetric_deposit(std::span<const Vec3> soil, con
     // round-off), goes to the nearest sector.
     if (azimuth > span) azimuth = azimuth - span < 2.0 * std::numbers::pi - azimuth ? span : 0.0;
     const auto sector = std::min(static_cast<std::size_t>(azimuth / span * sectors), radii.size() - 1);
-    const auto [top, fresh] = strip_tops[sector].try_emplace(std::llround(radius / dx), height, radius);
-    if (!fresh && height > top->second.first) top->second = {height, radius};
+    strips[sector][std::llround(radius / dx)].emplace_back(height, radius);
     if (height <= bottom_layer_spacings * dx) radii[sector].push_back(radius);
   }
   AxisymmetricDeposit deposit{};
@@ -68,12 +81,15 @@ AxisymmetricDeposit measure_axisymmetric_deposit(std::span<const Vec3> soil, con
   deposit.runout_radius_thick_m = std::numeric_limits<double>::quiet_NaN();
   if (toe_thickness > 0.0) {
     double thick = 0.0;
-    for (const auto& tops : strip_tops) {
+    for (auto& sector_strips : strips) {
       // From the outermost strip inwards, the first whose cell top reaches the toe thickness.
-      const auto reached = std::find_if(tops.rbegin(), tops.rend(), [&](const auto& strip) {
-        return strip.second.first + 0.5 * dx >= toe_thickness;
-      });
-      thick += reached == tops.rend() ? 0.0 : reached->second.second;
+      for (auto strip = sector_strips.rbegin(); strip != sector_strips.rend(); ++strip) {
+        const std::optional<std::pair<double, double>> top = linked_top(strip->second, link);
+        if (top && top->first + 0.5 * dx >= toe_thickness) {
+          thick += top->second;
+          break;
+        }
+      }
     }
     deposit.runout_radius_thick_m = thick / sectors;
   }

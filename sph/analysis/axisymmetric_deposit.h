@@ -24,7 +24,9 @@
 /// - runout_radius_thick_m (with a toe thickness t > 0, else NaN), as the 2D runout_thick_m
 ///   (deposit.h): per sector, the radius of the top particle of the outermost radial strip (width
 ///   one spacing) whose deposit is at least t thick, a strip's thickness being its top particle's
-///   height + half a spacing (the top of its cell); the mean over the sectors. Unlike the runout
+///   height + half a spacing (the top of its cell), the top being that of the strip's soil held up
+///   from the floor, as for height_m below (a grain thrown into the air over a strip, or one
+///   bouncing beyond the deposit, is no strip's top); the mean over the sectors. Unlike the runout
 ///   radius it ignores the edge thinner than t, a sheet one particle thick whose reach grows as the
 ///   spacing shrinks; t must span at least two spacings to be resolved.
 /// - height_m is the top of the highest particle's cell, half a spacing above its centre, among the

@@ -108,6 +108,18 @@ TEST_CASE("the thick runout radius: the outermost strip a toe thickness thick, t
   const AxisymmetricDeposit sheet = measure_axisymmetric_deposit(soil, kZAxis, dx, 360.0, 36, 1.2 * dx);
   CHECK(sheet.runout_radius_thick_m == Approx(25 * dx).epsilon(1e-12));
   CHECK(std::isnan(measure_axisymmetric_deposit(soil, kZAxis, dx, 360.0, 36).runout_radius_thick_m));
+  // Grains thrown off the front, as a fine run's are: one in the air 40 dx out in sector 0, one over
+  // the sheet in sector 1 (9 dx up) and one over the body in sector 2 (3 spacings above its top). No
+  // strip's soil held up from the floor reaches them: the thick runout stays the rim.
+  const auto at = [&](double r, double degrees, double z) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    return Vec3{r * std::cos(a), r * std::sin(a), z};
+  };
+  soil.push_back(at(40 * dx, 5.0, 4 * dx));
+  soil.push_back(at(20 * dx, 15.0, 9 * dx));
+  soil.push_back(at(10 * dx, 25.0, 9.5 * dx));
+  const AxisymmetricDeposit thrown = measure_axisymmetric_deposit(soil, kZAxis, dx, 360.0, 36, 3.0 * dx);
+  CHECK(thrown.runout_radius_thick_m == Approx(15 * dx).epsilon(1e-12));
 }
 
 TEST_CASE("no soil on the axis: height 0; bad input is refused", "[geometry3d]") {
