@@ -191,6 +191,7 @@ void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const f
   record.stop_reason = stop_reason(record.stats, signal);
   write_summary();
   exit_if_stopped_by_signal(record.stats, signal, dir);
+  warn_if_wall_guard_acted(record.stats, scene);
   report(scene, collapse, record.stats, dir);
 }
 

@@ -197,21 +197,6 @@ void record_end(sph::Summary& summary, const sph::RunStatistics& stats, const sp
   sph::write_summary_json(dir / "summary.json", summary);
 }
 
-void warn_if_wall_guard_acted(const sph::RunStatistics& stats, const sph::Scene& scene) {
-  if (stats.guard_corrections == 0) return;
-  std::cerr << "warning: the wall guard had to push soil particles back through a wall "
-            << stats.guard_corrections << " times (0 in a sound run; a smaller [numerics] cfl";
-  // Soft or overconsolidated MCC sheds grains that soften to dust and are compacted into the floor.
-  const bool unbounded_cam_clay = std::ranges::any_of(scene.materials, [](const Material& m) {
-    const auto* mcc = std::get_if<ModifiedCamClay>(&m);
-    return mcc && mcc->minimum_preconsolidation() == 0.0;
-  });
-  if (unbounded_cam_clay)
-    std::cerr << "; for modified-cam-clay soil a [material] minimum_preconsolidation such as 10 Pa, "
-                 "docs/validation/resolution.md";
-  std::cerr << ")\n";
-}
-
 /// A soil that loosens without bound (constitutive/models/loosening.h) jostles or scatters after the
 /// rest has stopped: say why when the run did not rest.
 void warn_if_not_at_rest(const sph::RunStatistics& stats, const sph::Scene& scene) {

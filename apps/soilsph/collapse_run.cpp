@@ -89,6 +89,25 @@ std::string stop_reason(const sph::RunStatistics& stats, const StopSignal& signa
              : std::string("signal ") + StopSignal::name(signal.received());
 }
 
+void warn_if_wall_guard_acted(const sph::RunStatistics& stats, const sph::SceneSettings& scene) {
+  if (stats.guard_corrections == 0) return;
+  std::cerr << "warning: the wall guard had to push soil particles back through a wall "
+            << stats.guard_corrections << " times (0 in a sound run; a smaller [numerics] cfl";
+  // A foot compacting over a floor under eq 11 as printed is what the guard holds most
+  // (docs/validation/three-dimensions.md); the density diffusion keeps it at its density.
+  if (scene.numerics.density_diffusion == 0.0)
+    std::cerr << "; where the soil's foot compacts over a floor, [numerics] density_diffusion = 0.1";
+  // Soft or overconsolidated MCC sheds grains that soften to dust and are compacted into the floor.
+  const bool unbounded_cam_clay = std::ranges::any_of(scene.materials, [](const Material& m) {
+    const auto* mcc = std::get_if<ModifiedCamClay>(&m);
+    return mcc && mcc->minimum_preconsolidation() == 0.0;
+  });
+  if (unbounded_cam_clay)
+    std::cerr << "; for modified-cam-clay soil a [material] minimum_preconsolidation such as 10 Pa, "
+                 "docs/validation/resolution.md";
+  std::cerr << ")\n";
+}
+
 void exit_if_stopped_by_signal(const sph::RunStatistics& stats, const StopSignal& signal,
                                const fs::path& dir) {
   if (stats.stop != sph::StopReason::Request) return;

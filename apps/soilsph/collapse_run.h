@@ -138,6 +138,8 @@ void report_gravity_loading(const std::optional<sph::GravityLoadingReport>& rela
 
 /// Why a run stopped, as summary.json's stop_reason says it: "at rest", "end time" or "signal SIGTERM".
 std::string stop_reason(const sph::RunStatistics& stats, const StopSignal& signal);
+/// A run whose wall guard acted says so on stderr, with what usually cures it.
+void warn_if_wall_guard_acted(const sph::RunStatistics& stats, const sph::SceneSettings& scene);
 /// A run stopped by a signal says where it is saved and how to go on, and exits with 128 + the signal
 /// (throws ExitCode); any other stop returns.
 void exit_if_stopped_by_signal(const sph::RunStatistics& stats, const StopSignal& signal,
