@@ -6,6 +6,7 @@
 // (collapse_command.cpp).
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <optional>
 
 #include "apps/soilsph/collapse_preparation.h"
@@ -49,7 +50,21 @@ struct RunRecord {
   bool complete = false;
   std::string stop_reason;            ///< "running" until it stops
   std::optional<double> resumed_from;  ///< the checkpoint's time (s) of a resumed run
+  bool failed = false;                 ///< stopped by an error: its particles may lie anywhere, even at NaN
 };
+
+constexpr double kUnmeasured = std::numeric_limits<double>::quiet_NaN();  // null in summary.json
+
+/// The deposit measures of a run, none (null) of a failed one: a blown-up soil has no deposit, and
+/// the measures refuse non-finite positions.
+sph::AxisymmetricDeposit axisymmetric_deposit(const sph::Collapse3& collapse, const RunRecord& record) {
+  if (record.failed) return {kUnmeasured, kUnmeasured, kUnmeasured, kUnmeasured, {}};
+  return collapse.axisymmetric_deposit();
+}
+sph::DepositMetrics slab_deposit(const sph::Collapse3& collapse, const RunRecord& record) {
+  if (record.failed) return {kUnmeasured, kUnmeasured, kUnmeasured, kUnmeasured};
+  return collapse.slab_deposit();
+}
 
 /// The name of a 3D scene's geometry in summary.json.
 std::string shape_name(sph::Geometry3::Shape shape) {
@@ -92,7 +107,7 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
       .add("guard_corrections", stats.guard_corrections)
       .add("fallback_stress_updates", stats.fallback_stress_updates);
   if (g.shape == sph::Geometry3::Shape::AxisymmetricColumn) {
-    const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
+    const sph::AxisymmetricDeposit d = axisymmetric_deposit(collapse, record);
     const double a = g.column_height / g.column_radius, r0 = g.column_radius;
     j.add("column_radius_m", r0)
         .add("column_height_m", g.column_height)
@@ -107,13 +122,13 @@ std::string summary_json(const sph::Scene3& scene, const sph::Collapse3& collaps
         .add("lube2004_height_m", r0 * sph::lube2004::height_ratio(a))
         .add("lube2004_time_to_rest_s", sph::lube2004::time_to_rest(g.column_height, g.gravity_magnitude()));
   } else if (g.shape == sph::Geometry3::Shape::Slab) {
-    const sph::DepositMetrics d = collapse.slab_deposit();
+    const sph::DepositMetrics d = slab_deposit(collapse, record);
     j.add("runout_m", d.runout_m)
         .add("height_m", d.height_m)
         .add("repose_angle_deg", d.repose_angle_deg)
         .add("runout_thick_m", d.runout_thick_m);
   } else if (g.deposit_measured) {  // regions: the axisymmetric measures from [deposit] axis
-    const sph::AxisymmetricDeposit d = collapse.axisymmetric_deposit();
+    const sph::AxisymmetricDeposit d = axisymmetric_deposit(collapse, record);
     j.add("azimuth_span_deg", g.azimuth_span_deg)
         .add("runout_radius_m", d.runout_radius_m)
         .add("runout_radius_spread_m", d.runout_radius_spread_m)
@@ -184,6 +199,7 @@ void run_collapse_3d(const CollapseOptions& o, const sph::Scene3& scene, const f
       run_with_frames(collapse, scene, tuner, files, control,
                       [&](const std::string& why, const std::optional<sph::RunStatistics>& reached) {
                         if (reached) record.stats = *reached;
+                        record.failed = true;
                         record.stop_reason = why;
                         write_summary();
                       });

@@ -5,6 +5,7 @@
 // docs/reference/output-formats.md.
 #include <algorithm>
 #include <iostream>
+#include <limits>
 
 #include "apps/soilsph/collapse_preparation.h"
 #include "apps/soilsph/collapse_run.h"
@@ -108,6 +109,12 @@ void add_statistics(sph::Summary& s, const sph::RunStatistics& stats, std::size_
   s.stopped_at_rest = stats.stopped_at_rest;
   s.guard_corrections = stats.guard_corrections;
   s.fallback_stress_updates = stats.fallback_stress_updates;
+}
+
+/// A failed run's deposit measures: none (null in summary.json), its particles may lie anywhere.
+void clear_deposit(sph::Summary& s) {
+  constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  s.runout_m = s.height_m = s.repose_angle_deg = s.runout_thick_m = none;
 }
 
 /// Adds what a run that stopped reports: statistics, deposit, end state.
@@ -259,6 +266,7 @@ void run_collapse(const CollapseOptions& o) {
       run_with_frames(collapse, scene, tuner, files, control,
                       [&](const std::string& why, const std::optional<sph::RunStatistics>& reached) {
                         if (reached) add_statistics(summary, *reached, collapse.particles().soil_count);
+                        clear_deposit(summary);
                         summary.stop_reason = why;
                         sph::write_summary_json(dir / "summary.json", summary);
                       });

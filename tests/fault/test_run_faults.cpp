@@ -265,7 +265,8 @@ TEST_CASE("a blow-up stops the run, naming the particle, quantity, step and time
   CHECK(r.exit_status == 1);
   CHECK_THAT(r.log, Contains("error: blow-up: ") && Contains("soil particle") && Contains("(step ") &&
                         Contains("[numerics] cfl"));
-  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("blow-up"));
+  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("blow-up") &&
+                                                Contains("\"runout_m\": null"));  // no deposit
   check_failed_summary(dir, r.log);
   CHECK_NOTHROW(read_frames(dir));
   CHECK(fs::exists(dir / "checkpoint.h5"));  // the last good checkpoint is kept
@@ -425,7 +426,8 @@ TEST_CASE(
   INFO(r.log);
   CHECK(r.exit_status == 1);
   CHECK_THAT(r.log, Contains("error: blow-up: ") && Contains("floor_radius") && Contains("(step "));
-  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("blow-up"));
+  CHECK_THAT(text_of(dir / "summary.json"), Contains("\"complete\": false") && Contains("blow-up") &&
+                                                Contains("\"runout_radius_m\": null"));  // no deposit
   check_failed_summary(dir, r.log);
 }
 
