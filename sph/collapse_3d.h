@@ -63,11 +63,12 @@ class Collapse3 {
                                         0.1 * (g.surface_level - g.floor_level));
   }
   /// The slab's deposit: the 2D column's measures (runout, height, repose angle, runout where the
-  /// deposit is H0/10 thick) of the particles seen along z, the fixed wall at x = W.
+  /// deposit is H0/10 thick) of the body linked in space, seen along z, the fixed wall at x = W.
   DepositMetrics slab_deposit() const {
     const Geometry3& g = scene_.geometry;
-    return measure_deposit({particles_.x.data(), particles_.soil_count}, {particles_.y.data(), particles_.soil_count},
-                           g.column_width, g.particle_spacing, 0.1 * g.column_height);
+    const std::size_t n = particles_.soil_count;
+    return measure_slab_deposit({particles_.x.data(), n}, {particles_.y.data(), n}, {particles_.z.data(), n},
+                                g.column_width, g.particle_spacing, 0.1 * g.column_height);
   }
 
   const ParticlesOf<3>& particles() const { return particles_; }

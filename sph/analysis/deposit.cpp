@@ -2,6 +2,7 @@
 #include "sph/analysis/deposit.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -40,36 +41,44 @@ class DisjointSets {
   std::vector<std::size_t> parent_, size_;
 };
 
-/// Indices of the largest set of particles linked (directly or through others) by distances ≤ link.
-/// Cells of side `link` mean a particle's links are all in its own or the 8 surrounding cells.
-std::vector<std::size_t> largest_cluster(std::span<const double> x, std::span<const double> y, double link) {
-  using Cell = std::pair<std::int64_t, std::int64_t>;
-  const double x0 = *std::min_element(x.begin(), x.end()), y0 = *std::min_element(y.begin(), y.end());
+/// Indices of the largest set of particles linked (directly or through others) by distances ≤ link,
+/// `axes` their coordinates in the plane (x, y) or in space (x, y, z). Cells of side `link` mean a
+/// particle's links are all in its own or the 3^dim − 1 surrounding cells.
+template <std::size_t dim>
+std::vector<std::size_t> largest_cluster(const std::array<std::span<const double>, dim>& axes, double link) {
+  using Cell = std::array<std::int64_t, dim>;
+  const std::size_t n = axes[0].size();
+  std::array<double, dim> lowest;
+  for (std::size_t a = 0; a < dim; ++a) lowest[a] = *std::min_element(axes[a].begin(), axes[a].end());
   std::map<Cell, std::vector<std::size_t>> cells;  // sparse: a far splash does not allocate a grid
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    cells[{static_cast<std::int64_t>(std::floor((x[i] - x0) / link)),
-           static_cast<std::int64_t>(std::floor((y[i] - y0) / link))}]
-        .push_back(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    Cell cell;
+    for (std::size_t a = 0; a < dim; ++a)
+      cell[a] = static_cast<std::int64_t>(std::floor((axes[a][i] - lowest[a]) / link));
+    cells[cell].push_back(i);
   }
-  DisjointSets sets(x.size());
+  DisjointSets sets(n);
   const double link2 = link * link;
+  const auto linked = [&](std::size_t i, std::size_t j) {
+    double r2 = 0.0;
+    for (std::size_t a = 0; a < dim; ++a) r2 += (axes[a][i] - axes[a][j]) * (axes[a][i] - axes[a][j]);
+    return r2 <= link2;
+  };
+  constexpr int kNeighbourCells = dim == 2 ? 9 : 27;
   for (const auto& [cell, members] : cells) {
-    for (std::int64_t dx = -1; dx <= 1; ++dx) {
-      for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const auto other = cells.find({cell.first + dx, cell.second + dy});
-        if (other == cells.end()) continue;
-        for (const std::size_t i : members) {
-          for (const std::size_t j : other->second) {
-            if (j <= i) continue;
-            const double rx = x[i] - x[j], ry = y[i] - y[j];
-            if (rx * rx + ry * ry <= link2) sets.unite(i, j);
-          }
-        }
-      }
+    for (int k = 0; k < kNeighbourCells; ++k) {
+      Cell next = cell;
+      for (std::size_t a = 0, code = static_cast<std::size_t>(k); a < dim; ++a, code /= 3)
+        next[a] += static_cast<std::int64_t>(code % 3) - 1;
+      const auto other = cells.find(next);
+      if (other == cells.end()) continue;
+      for (const std::size_t i : members)
+        for (const std::size_t j : other->second)
+          if (j > i && linked(i, j)) sets.unite(i, j);
     }
   }
   std::size_t root = 0, best = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     if (sets.size(i) > best) {
       best = sets.size(i);
       root = sets.find(i);
@@ -77,7 +86,7 @@ std::vector<std::size_t> largest_cluster(std::span<const double> x, std::span<co
   }
   std::vector<std::size_t> cluster;
   cluster.reserve(best);
-  for (std::size_t i = 0; i < x.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     if (sets.find(i) == root) cluster.push_back(i);
   }
   return cluster;
@@ -143,7 +152,7 @@ DepositMetrics measure_deposit(std::span<const double> x, std::span<const double
                                   " has a non-finite position");
     }
   }
-  const std::vector<std::size_t> cluster = largest_cluster(x, y, deposit_link_spacings * spacing);
+  const std::vector<std::size_t> cluster = largest_cluster<2>({x, y}, deposit_link_spacings * spacing);
   double min_x = x[cluster.front()], max_y = y[cluster.front()];
   for (const std::size_t i : cluster) {
     min_x = std::min(min_x, x[i]);
@@ -153,6 +162,27 @@ DepositMetrics measure_deposit(std::span<const double> x, std::span<const double
   return {fixed_wall_x - min_x, max_y, repose_angle(x, y, top, max_y),
           toe_thickness > 0.0 ? runout_at_thickness(x, y, top, fixed_wall_x, spacing, toe_thickness)
                               : std::numeric_limits<double>::quiet_NaN()};
+}
+
+DepositMetrics measure_slab_deposit(std::span<const double> x, std::span<const double> y,
+                                    std::span<const double> z, double fixed_wall_x, double spacing,
+                                    double toe_thickness) {
+  if (x.empty() || x.size() != y.size() || x.size() != z.size())
+    throw std::invalid_argument("measure_slab_deposit: x, y and z must be non-empty and of equal length");
+  if (!(spacing > 0) || !std::isfinite(spacing))
+    throw std::invalid_argument("measure_slab_deposit: spacing must be finite and > 0");
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(z[i]))
+      throw std::invalid_argument("measure_slab_deposit: particle " + std::to_string(i) +
+                                  " has a non-finite position");
+  const std::vector<std::size_t> body = largest_cluster<3>({x, y, z}, deposit_link_spacings * spacing);
+  std::vector<double> body_x, body_y;
+  body_x.reserve(body.size());
+  body_y.reserve(body.size());
+  for (const std::size_t i : body) body_x.push_back(x[i]), body_y.push_back(y[i]);
+  // Linked in space, the body is linked on the plane too (projection shortens every distance):
+  // the plane's measure keeps it whole.
+  return measure_deposit(body_x, body_y, fixed_wall_x, spacing, toe_thickness);
 }
 
 DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, const DepositFrame& frame,

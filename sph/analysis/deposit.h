@@ -59,6 +59,15 @@ struct DepositFrame {
 DepositMetrics measure_deposit(std::span<const double> x, std::span<const double> y, double fixed_wall_x,
                                double spacing, double toe_thickness = 0.0);
 
+/// The deposit of a slab (the column extruded along z between two symmetry planes): the measures
+/// above of the particles of the largest cluster linked in space (x, y, z), taken onto the plane.
+/// Linked on the plane instead, the slab's layers would link particles that lie up to the slab's
+/// width apart across it, and a toe of lone particles in different layers would read as one body.
+/// Throws std::invalid_argument as measure_deposit does, and on a non-finite z.
+DepositMetrics measure_slab_deposit(std::span<const double> x, std::span<const double> y,
+                                    std::span<const double> z, double fixed_wall_x, double spacing,
+                                    double toe_thickness = 0.0);
+
 /// The same in `frame` (NaN throughout if the frame is undefined): the particles are taken to the
 /// coordinates (−direction·x, up·(x − origin)), in which the frame's origin is a fixed wall at
 /// −direction·origin on the floor y = 0. The rotation alone (no shift along the flow) keeps the

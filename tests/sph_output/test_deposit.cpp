@@ -101,6 +101,37 @@ TEST_CASE("a particle within the link distance of the toe belongs to the deposit
   CHECK(far.measure().runout_m == Approx(0.1).epsilon(1e-12));
 }
 
+TEST_CASE("a slab's deposit links its body in space: lone particles of different layers do not chain",
+          "[deposit]") {
+  // The pile above extruded over five layers z = 0 … 4 spacings, and beyond its toe a line of lone
+  // particles 1.5 spacings apart along x that alternate between the last and the first layer: seen
+  // along z they chain to the toe (gaps of 1.5 ≤ 2 spacings), in space each lies 4.3 spacings from
+  // the next, and only the first is within the link distance of the pile (of its last layer's
+  // toe). One more particle 1.9 spacings beyond the toe in the middle layer joins the pile too.
+  const double toe = kWall - 100 * kSpacing;
+  Particles pile;
+  pile.add_profile(101, [&](double px) { return 0.5 * (px - toe); });
+  std::vector<double> x, y, z;
+  for (int layer = 0; layer < 5; ++layer) {
+    x.insert(x.end(), pile.x.begin(), pile.x.end());
+    y.insert(y.end(), pile.y.begin(), pile.y.end());
+    z.insert(z.end(), pile.x.size(), layer * kSpacing);
+  }
+  for (int k = 1; k <= 20; ++k) {
+    x.push_back(toe - 1.5 * k * kSpacing);
+    y.push_back(0.0);
+    z.push_back(k % 2 == 0 ? 0.0 : 4 * kSpacing);
+  }
+  const auto slab = soilsph::sph::measure_slab_deposit(x, y, z, kWall, kSpacing);
+  CHECK(slab.runout_m == Approx(0.1 + 1.5 * kSpacing).epsilon(1e-12));
+  CHECK(slab.height_m == Approx(pile.measure().height_m).epsilon(1e-12));
+  CHECK(slab.repose_angle_deg == Approx(pile.measure().repose_angle_deg).epsilon(1e-12));
+  CHECK(measure_deposit(x, y, kWall, kSpacing).runout_m == Approx(0.1 + 30 * kSpacing).epsilon(1e-12));
+  x.push_back(toe - 1.9 * kSpacing), y.push_back(0.0), z.push_back(2 * kSpacing);
+  CHECK(soilsph::sph::measure_slab_deposit(x, y, z, kWall, kSpacing).runout_m ==
+        Approx(0.1 + 1.9 * kSpacing).epsilon(1e-12));
+}
+
 TEST_CASE("a trapezoid: the angle is that of the slope, not of the plateau", "[deposit]") {
   // Plateau of height 3 cm over the 3 cm next to the wall, then a 35° slope down to the toe.
   const double height = 0.03, slope = std::tan(35.0 * std::numbers::pi / 180.0);
